@@ -1,0 +1,38 @@
+#!/usr/bin/env bash
+# tetblend's one entry point for developers and CI.
+#   ./dev.sh setup   install the Debian packages the project needs (idempotent)
+#   ./dev.sh build   set up, then configure and build (Release) into build/release
+#   ./dev.sh demo    set up, build, and run the main job on the bundled samples
+#   ./dev.sh test    set up, build, and run the whole test suite with ctest
+#   ./dev.sh asan    set up, build with ASan+UBSan into build/asan, run the suite
+#   ./dev.sh bench   set up, build, and run the benchmarks (figures for README)
+set -euo pipefail
+cd "$(dirname "$0")"
+jobs=$(nproc)
+
+build() { # build <dir> <cmake args...>
+  local dir=$1; shift
+  cmake -S . -B "$dir" -G Ninja "$@"
+  cmake --build "$dir" --parallel "$jobs"
+}
+
+case "${1:-}" in
+  setup) bash setup.sh ;;
+  build) bash setup.sh && build build/release -DCMAKE_BUILD_TYPE=Release ;;
+  demo)
+    bash setup.sh && build build/release -DCMAKE_BUILD_TYPE=Release
+    bash samples/run_samples.sh build/release out/samples ;;
+  test)
+    bash setup.sh && build build/release -DCMAKE_BUILD_TYPE=Release
+    ctest --test-dir build/release --output-on-failure --parallel "$jobs" ;;
+  asan)
+    bash setup.sh
+    build build/asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DTETBLEND_SANITIZE=ON \
+      -DTETBLEND_BUILD_BENCHMARKS=OFF
+    ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
+      ctest --test-dir build/asan --output-on-failure --parallel "$jobs" ;;
+  bench)
+    bash setup.sh && build build/release -DCMAKE_BUILD_TYPE=Release
+    for b in build/release/apps/bench/bench_*; do "$b"; done ;;
+  *) sed -n '2,9p' "$0"; exit 2 ;;
+esac

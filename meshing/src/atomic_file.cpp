@@ -1,0 +1,48 @@
+#include "tetblend/meshing/atomic_file.h"
+
+#include <filesystem>
+#include <random>
+#include <system_error>
+
+#include "tetblend/core/error.h"
+
+namespace tetblend {
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string temporarySibling(const fs::path& target) {
+  std::random_device device;
+  const auto tag = std::to_string(device());
+  return (target.parent_path() / ("." + target.filename().string() + "." + tag + ".tmp"))
+      .string();
+}
+
+}  // namespace
+
+void writeFileAtomically(const std::string& path,
+                         const std::function<void(const std::string& tempPath)>& write) {
+  const fs::path target(path);
+  const fs::path directory =
+      target.parent_path().empty() ? fs::path(".") : target.parent_path();
+  std::error_code ec;
+  if (!fs::is_directory(directory, ec)) {
+    throw InputError(path + ": directory '" + directory.string() +
+                     "' does not exist; create it first");
+  }
+  const std::string temp = temporarySibling(target);
+  try {
+    write(temp);
+  } catch (...) {
+    fs::remove(temp, ec);
+    throw;
+  }
+  fs::rename(temp, target, ec);
+  if (ec) {
+    fs::remove(temp, ec);
+    throw InputError(path + ": cannot replace the file (" + ec.message() +
+                     "); check permissions");
+  }
+}
+
+}  // namespace tetblend
