@@ -1,0 +1,58 @@
+#pragma once
+// Helpers shared by the subcommands of the tetblend command line: argument
+// parsing of weight lists, output naming, thread limits and the option every
+// subcommand has (--quiet).
+
+#include <CLI/CLI.hpp>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace tetblend::cli {
+
+/// Parses a comma-separated list of finite numbers ("0.5,-0.2,1"); `what`
+/// names the option in the InputError thrown for an empty list or a bad
+/// number.
+std::vector<double> parseWeights(const std::string& text, const std::string& what);
+
+/// Parses semicolon-separated weight vectors ("0,0;1,0;0,1").
+std::vector<std::vector<double>> parseWeightKeys(const std::string& text, const std::string& what);
+
+/// Checks that `weights` has one entry per example; InputError otherwise.
+void requireWeightCount(const std::vector<double>& weights, std::size_t exampleCount,
+                        const std::string& what);
+
+/// `path` with its extension replaced by `extension` (".vtp").
+std::string withExtension(const std::string& path, const std::string& extension);
+
+/// Lower-case extension of `path` including the dot (".vtu"), or "".
+std::string extensionOf(const std::string& path);
+
+/// Creates directory `dir` (and parents) if missing; InputError on failure.
+void ensureDirectory(const std::string& dir);
+
+/// Adds --quiet (silences progress bars) to `command`.
+void addQuietOption(CLI::App& command, bool& quiet);
+
+/// Adds --threads (0 = all cores) to `command`.
+void addThreadsOption(CLI::App& command, int& threads);
+
+/// Limits TBB's parallelism to `threads` (0 = no limit) while alive.
+class ThreadLimit {
+ public:
+  explicit ThreadLimit(int threads);
+  ~ThreadLimit();
+  ThreadLimit(const ThreadLimit&) = delete;
+  ThreadLimit& operator=(const ThreadLimit&) = delete;
+
+ private:
+  std::shared_ptr<void> control_;
+};
+
+/// Number of worker threads to use for `threads` (0 = hardware concurrency).
+int resolveThreads(int threads);
+
+/// Formats a double in shortest round-trip form (for names and tables).
+std::string formatNumber(double value);
+
+}  // namespace tetblend::cli

@@ -1,0 +1,57 @@
+#pragma once
+// The prepared-model file written by `tetblend prepare` and read by every
+// other subcommand: the compatible tet meshes of one example set, so that
+// blending a thousand weight vectors costs one load, not a thousand
+// tetrahedralisations. (Parametrisation and the stitch factorisation are
+// cheap next to TetGen and are redone on load.)
+//
+// Binary layout, all integers little-endian, doubles IEEE-754 binary64 LE:
+//   8 bytes   magic "TBMODEL\0"
+//   u32       format version (kModelFormatVersion)
+//   u64       payload size in bytes
+//   payload:  u64 #V, #T, #F, surface vertex count, #examples;
+//             rest vertices (#V*3 f64), tets (#T*4 i32), surface triangles
+//             (#F*3 i32); per example: vertices (#V*3 f64);
+//             rest source name, then one per example (u64 length + bytes)
+//   u64       FNV-1a 64 hash of the payload bytes
+// A file with another magic, another version, a wrong size or a wrong hash is
+// refused with an InputError that says which and what to do.
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "tetblend/core/mesh_types.h"
+
+namespace tetblend::cli {
+
+/// Version of the layout above; bump on any change of the payload.
+constexpr std::uint32_t kModelFormatVersion = 1;
+
+/// What a model file holds.
+struct ModelData {
+  TetMesh rest;                             ///< rest tet mesh; surface vertices first
+  Triangles surfaceTriangles;               ///< rest surface faces, indices < surfaceVertexCount
+  int surfaceVertexCount = 0;               ///< the first rows of rest.vertices are the surface's
+  std::vector<Vertices> examples;           ///< per example, #V by 3 positions (rest order)
+  std::string restSource;                   ///< file the rest surface came from
+  std::vector<std::string> exampleSources;  ///< one per example
+};
+
+/// FNV-1a 64-bit hash of `size` bytes, continuing from `hash`.
+std::uint64_t fnv1a64(const unsigned char* data, std::size_t size,
+                      std::uint64_t hash = 0xcbf29ce484222325ULL);
+
+/// Checks the internal consistency of `model` (index ranges, shapes); throws
+/// InputError naming `what` (a file name) on the first problem.
+void checkModel(const ModelData& model, const std::string& what);
+
+/// Writes `model` to `path` atomically (writeFileAtomically).
+void writeModelFile(const std::string& path, const ModelData& model);
+
+/// Reads and checks a model file; throws InputError for a missing, foreign,
+/// other-version, truncated or damaged file.
+ModelData readModelFile(const std::string& path);
+
+}  // namespace tetblend::cli
