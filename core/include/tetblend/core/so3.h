@@ -1,0 +1,127 @@
+#pragma once
+// The rotation group SO(3) and its Lie algebra so(3): hat/vee, the exponential
+// (Rodrigues), the principal logarithm (exact through theta = pi) and the
+// logarithm closest to a reference (Kaji–Ochiai Alg. 1, rotations beyond 2 pi).
+//
+// Convention: hat(w) * v = w x v, i.e. hat(w) = [[0,-w3,w2],[w3,0,-w1],[-w2,w1,0]].
+// Angles are in radians. The kernels are inline: they sit in per-tet loops.
+
+#include <Eigen/Core>
+
+#include <cmath>
+
+namespace tetblend {
+
+namespace so3_detail {
+
+/// Below this angle (radians) the so(3) exponential and logarithm use Taylor
+/// series truncated after the theta^2 term. The dropped term is O(theta^4)
+/// relative (coefficients 1/120 and 7/360), so it stays below epsilon for
+/// theta < eps^(1/4) ~ 1.2e-4. Above it the closed forms are accurate.
+inline const double kSmallAngle = std::sqrt(std::sqrt(2.220446049250313e-16));
+
+/// Cosine below which the logarithm takes the rotation axis from the symmetric
+/// part (R + R^T)/2 = cos(theta) I + (1 - cos(theta)) a a^T (Eberly eq. (11) and
+/// its special case at theta = pi) instead of the skew part sin(theta) [a]x,
+/// whose direction loses accuracy as sin(theta) -> 0. For cos(theta) < 0 the
+/// symmetric form has 1 - cos(theta) > 1, so it is accurate to a few ulps.
+constexpr double kAxisFromSymmetricCos = 0.0;
+
+constexpr double kPi = 3.14159265358979323846;
+
+}  // namespace so3_detail
+
+/// hat: R^3 -> so(3), the 3x3 skew-symmetric matrix with hat(w) v = w x v.
+inline Eigen::Matrix3d hat(const Eigen::Vector3d& w) {
+  Eigen::Matrix3d m;
+  m << 0.0, -w.z(), w.y(), w.z(), 0.0, -w.x(), -w.y(), w.x(), 0.0;
+  return m;
+}
+
+/// vee: so(3) -> R^3, inverse of hat. For a matrix that is not exactly
+/// skew-symmetric it returns vee of its skew part (M - M^T)/2.
+inline Eigen::Vector3d vee(const Eigen::Matrix3d& m) {
+  return 0.5 * Eigen::Vector3d(m(2, 1) - m(1, 2), m(0, 2) - m(2, 0), m(1, 0) - m(0, 1));
+}
+
+/// Rotation matrix exp(hat(omega)) by Rodrigues' formula (Kaji–Ochiai §4.1):
+/// exp(X) = I + sin(t)/t X + (1 - cos(t))/t^2 X^2, t = |omega| (radians).
+/// (1 - cos t) is evaluated as 2 sin^2(t/2) to avoid cancellation; below
+/// so3_detail::kSmallAngle both coefficients use their Taylor series. Any
+/// omega is valid, including |omega| > 2 pi.
+inline Eigen::Matrix3d so3Exp(const Eigen::Vector3d& omega) {
+  const double theta2 = omega.squaredNorm();
+  double a;  // sin(t)/t
+  double b;  // (1 - cos t)/t^2
+  if (theta2 < so3_detail::kSmallAngle * so3_detail::kSmallAngle) {
+    a = 1.0 - theta2 / 6.0;
+    b = 0.5 - theta2 / 24.0;
+  } else {
+    const double theta = std::sqrt(theta2);
+    const double s = std::sin(0.5 * theta);
+    const double c = std::cos(0.5 * theta);
+    a = 2.0 * s * c / theta;
+    b = 2.0 * s * s / theta2;
+  }
+  const double x = omega.x(), y = omega.y(), z = omega.z();
+  const double bxy = b * x * y, bxz = b * x * z, byz = b * y * z;
+  Eigen::Matrix3d r;
+  r << 1.0 - b * (y * y + z * z), bxy - a * z, bxz + a * y,  //
+      bxy + a * z, 1.0 - b * (x * x + z * z), byz - a * x,   //
+      bxz - a * y, byz + a * x, 1.0 - b * (x * x + y * y);
+  return r;
+}
+
+/// Principal logarithm of a rotation matrix R (3x3, orthonormal, det +1) as a
+/// rotation vector omega with |omega| = theta in [0, pi] (Kaji–Ochiai eq. (7),
+/// Eberly eq. (11)). theta = atan2(|vee(R - R^T)|/2, (tr R - 1)/2), accurate
+/// everywhere (acos alone loses half the digits near 0 and pi). For theta >
+/// pi/2 the axis comes from the symmetric part, which makes the result exact at
+/// theta = pi (Eberly's special case; the sign is then that of the largest
+/// axis component's row, either is a valid logarithm). If R is only nearly
+/// orthonormal, the result is the log of a nearby rotation.
+inline Eigen::Vector3d so3Log(const Eigen::Matrix3d& r) {
+  const Eigen::Vector3d v = vee(r);  // sin(theta) * axis
+  const double c = 0.5 * (r.trace() - 1.0);
+  const double s = v.norm();
+  const double theta = std::atan2(s, c);
+  if (c >= so3_detail::kAxisFromSymmetricCos) {
+    // theta / sin(theta) = 1 + theta^2/6 + O(theta^4).
+    const double f = theta < so3_detail::kSmallAngle ? 1.0 + theta * theta / 6.0 : theta / s;
+    return f * v;
+  }
+  // (R + R^T)/2 - c I = (1 - c) a a^T; take the best-conditioned column.
+  const Eigen::Matrix3d sym = 0.5 * (r + r.transpose());
+  Eigen::Vector3d d = sym.diagonal().array() - c;
+  int k = 0;
+  d.maxCoeff(&k);
+  Eigen::Vector3d axis = sym.col(k);
+  axis(k) -= c;
+  axis.normalize();
+  if (axis.dot(v) < 0.0) axis = -axis;
+  return theta * axis;
+}
+
+/// Logarithm of R closest (Euclidean norm in R^3) to `reference` among all
+/// logarithms of R, (theta + 2 pi k) * axis for integer k (Kaji–Ochiai §4.3,
+/// Alg. 1). This represents rotations by more than 2 pi when the reference
+/// comes from a neighbouring element or the previous frame. For R = I exactly
+/// the logarithms are the spheres |omega| = 2 pi k and the closest point on the
+/// nearest sphere along `reference` is returned.
+inline Eigen::Vector3d so3LogClosest(const Eigen::Matrix3d& r, const Eigen::Vector3d& reference) {
+  constexpr double kTwoPi = 2.0 * so3_detail::kPi;
+  const Eigen::Vector3d principal = so3Log(r);
+  const double theta = principal.norm();
+  if (theta == 0.0) {
+    const double refNorm = reference.norm();
+    if (refNorm == 0.0) return principal;
+    return (kTwoPi * std::round(refNorm / kTwoPi) / refNorm) * reference;
+  }
+  const Eigen::Vector3d axis = principal / theta;
+  // |reference - (theta + 2 pi k) axis|^2 is minimal for the k nearest to
+  // (reference . axis - theta) / (2 pi).
+  const double k = std::round((reference.dot(axis) - theta) / kTwoPi);
+  return (theta + kTwoPi * k) * axis;
+}
+
+}  // namespace tetblend

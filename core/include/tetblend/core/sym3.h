@@ -1,0 +1,52 @@
+#pragma once
+// Symmetric 3x3 matrices: the exponential sym(3) -> Sym+(3) and the logarithm
+// Sym+(3) -> sym(3) by the closed forms of Kaji–Ochiai §4.1–4.2, eq. (4)–(6)
+// (cubic-formula eigenvalues and Cayley–Hamilton reduction to a quadratic in
+// the matrix), written in Newton divided-difference form so that coincident
+// and near-coincident eigenvalues lose no accuracy.
+
+#include <Eigen/Core>
+
+#include <cmath>
+
+namespace tetblend {
+
+/// Eigenvalues of a symmetric 3x3 matrix Y in descending order, by the
+/// trigonometric cubic formula (Kaji–Ochiai §4.1). Absolute error a few ulps
+/// of the spectral radius. Y must be symmetric (only its upper triangle and
+/// diagonal are read).
+Eigen::Vector3d symEigenvalues(const Eigen::Matrix3d& y);
+
+/// Matrix exponential of a symmetric 3x3 Y (dimensionless), Kaji–Ochiai eq.
+/// (4), with the series (5) extended to third order when the eigenvalue
+/// spread is small. Result is symmetric positive definite up to round-off;
+/// error relative to |exp Y|_F is a few ulps times the eigenvalue spread.
+Eigen::Matrix3d symExp(const Eigen::Matrix3d& y);
+
+/// Principal logarithm of a symmetric positive definite 3x3 S, Kaji–Ochiai
+/// eq. (6) (applied to S itself rather than to A^T A). For cond(S) above
+/// sym3_detail::kLogClosedFormMaxCond the quadratic closed form loses digits,
+/// so the logarithm is taken as V log(Lambda) V^T from a QR-iteration
+/// eigen-decomposition. Throws DomainError if S is not positive definite or
+/// not finite.
+Eigen::Matrix3d symLog(const Eigen::Matrix3d& s);
+
+namespace sym3_detail {
+/// Condition number above which symLog leaves the closed form (6) for the
+/// eigen-decomposition: the Vandermonde reduction amplifies round-off by about
+/// cond(S) (the Z^2 term spans cond^2 while the result spans log cond).
+constexpr double kLogClosedFormMaxCond = 1e2;
+/// Eigenvalue spread lambda1 - lambda3 below which symExp evaluates the second
+/// divided difference of exp (coefficient c of eq. (4)) by its Taylor series
+/// through third order. The dropped fourth-order term is <= 5 h^4/720 and
+/// multiplies Z(Z - l1 I), of norm <= h^2, so it stays below epsilon for
+/// h < (144 eps)^(1/6) ~ 5.6e-3.
+inline const double kExpSeriesSpread = std::pow(144.0 * 2.220446049250313e-16, 1.0 / 6.0);
+/// Relative eigenvalue spread (mu1 - mu3)/mu2 below which symLog evaluates the
+/// second divided difference of log by its Taylor series through third order.
+/// The dropped term is <= 5 h^4/6 and multiplies a matrix of norm <= h^2, so
+/// it stays below epsilon for h < (1.2 eps)^(1/6) ~ 8.1e-3.
+inline const double kLogSeriesSpread = std::pow(1.2 * 2.220446049250313e-16, 1.0 / 6.0);
+}  // namespace sym3_detail
+
+}  // namespace tetblend

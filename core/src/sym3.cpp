@@ -1,0 +1,130 @@
+#include "tetblend/core/sym3.h"
+
+#include <Eigen/Eigenvalues>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "tetblend/core/error.h"
+
+namespace tetblend {
+namespace {
+
+/// Z^2 for symmetric Z, evaluated so the result is exactly symmetric.
+Eigen::Matrix3d symSquare(const Eigen::Matrix3d& z) {
+  Eigen::Matrix3d r;
+  r(0, 0) = z(0, 0) * z(0, 0) + z(0, 1) * z(0, 1) + z(0, 2) * z(0, 2);
+  r(1, 1) = z(0, 1) * z(0, 1) + z(1, 1) * z(1, 1) + z(1, 2) * z(1, 2);
+  r(2, 2) = z(0, 2) * z(0, 2) + z(1, 2) * z(1, 2) + z(2, 2) * z(2, 2);
+  r(0, 1) = r(1, 0) = z(0, 0) * z(0, 1) + z(0, 1) * z(1, 1) + z(0, 2) * z(1, 2);
+  r(0, 2) = r(2, 0) = z(0, 0) * z(0, 2) + z(0, 1) * z(1, 2) + z(0, 2) * z(2, 2);
+  r(1, 2) = r(2, 1) = z(0, 1) * z(0, 2) + z(1, 1) * z(1, 2) + z(1, 2) * z(2, 2);
+  return r;
+}
+
+/// First divided difference of exp at (0, x): expm1(x)/x, accurate for all x.
+double expDivided(double x) { return x == 0.0 ? 1.0 : std::expm1(x) / x; }
+
+/// First divided difference of log at (1, 1 + x): log1p(x)/x.
+double logDivided(double x) { return x == 0.0 ? 1.0 : std::log1p(x) / x; }
+
+Eigen::Matrix3d symLogByEigenDecomposition(const Eigen::Matrix3d& s) {
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es(s);
+  const Eigen::Vector3d mu = es.eigenvalues();
+  if (es.info() != Eigen::Success || !(mu.minCoeff() > 0.0)) {
+    std::ostringstream msg;
+    msg << "symLog: matrix is not symmetric positive definite (smallest eigenvalue "
+        << mu.minCoeff() << "); the logarithm of a stretch needs S > 0";
+    throw DomainError(msg.str());
+  }
+  const Eigen::Matrix3d& v = es.eigenvectors();
+  const Eigen::Matrix3d r = v * mu.array().log().matrix().asDiagonal() * v.transpose();
+  return 0.5 * (r + r.transpose());
+}
+
+}  // namespace
+
+Eigen::Vector3d symEigenvalues(const Eigen::Matrix3d& y) {
+  const double q = y.trace() / 3.0;
+  const double b00 = y(0, 0) - q, b11 = y(1, 1) - q, b22 = y(2, 2) - q;
+  const double b01 = y(0, 1), b02 = y(0, 2), b12 = y(1, 2);
+  const double p2 =
+      (b00 * b00 + b11 * b11 + b22 * b22 + 2.0 * (b01 * b01 + b02 * b02 + b12 * b12)) / 6.0;
+  if (p2 == 0.0) return Eigen::Vector3d::Constant(q);
+  const double p = std::sqrt(p2);
+  const double ip = 1.0 / p;
+  const double c00 = b00 * ip, c11 = b11 * ip, c22 = b22 * ip;
+  const double c01 = b01 * ip, c02 = b02 * ip, c12 = b12 * ip;
+  const double det =
+      c00 * (c11 * c22 - c12 * c12) - c01 * (c01 * c22 - c12 * c02) + c02 * (c01 * c12 - c11 * c02);
+  const double r = std::clamp(0.5 * det, -1.0, 1.0);
+  const double phi = std::acos(r) / 3.0;
+  constexpr double kTwoPiOver3 = 2.0943951023931954923;
+  const double l1 = q + 2.0 * p * std::cos(phi);
+  const double l3 = q + 2.0 * p * std::cos(phi + kTwoPiOver3);
+  return Eigen::Vector3d(l1, 3.0 * q - l1 - l3, l3);
+}
+
+Eigen::Matrix3d symExp(const Eigen::Matrix3d& y) {
+  const Eigen::Vector3d lambda = symEigenvalues(y);
+  const double l1 = lambda(0) - lambda(1);  // >= 0
+  const double l3 = lambda(2) - lambda(1);  // <= 0
+  const double h = l1 - l3;
+  // Newton form of the interpolating quadratic at the nodes (0, l1, l3) of
+  // exp(x + lambda2): exp(Y) = e^lambda2 (I + b Z + c Z^2), Z = Y - lambda2 I,
+  // with c = exp[0, l1, l3] and b = exp[0, l1] - l1 c (eq. (4)).
+  double c;
+  if (h < sym3_detail::kExpSeriesSpread) {
+    // exp[0, l1, l3] = sum_k h_k(l1, l3) / (k + 2)!, h_k complete homogeneous;
+    // series through k = 3 (eq. (5) plus one order).
+    c = 0.5 + (l1 + l3) / 6.0 + (l1 * l1 + l1 * l3 + l3 * l3) / 24.0 +
+        (l1 + l3) * (l1 * l1 + l3 * l3) / 120.0;
+  } else {
+    c = (expDivided(l1) - expDivided(l3)) / h;
+  }
+  const double b = expDivided(l1) - l1 * c;
+  Eigen::Matrix3d z = y;
+  z.diagonal().array() -= lambda(1);
+  z(1, 0) = z(0, 1);
+  z(2, 0) = z(0, 2);
+  z(2, 1) = z(1, 2);
+  Eigen::Matrix3d r = b * z + c * symSquare(z);
+  r.diagonal().array() += 1.0;
+  return std::exp(lambda(1)) * r;
+}
+
+Eigen::Matrix3d symLog(const Eigen::Matrix3d& s) {
+  if (!s.allFinite()) throw DomainError("symLog: matrix has a non-finite entry");
+  const Eigen::Vector3d mu = symEigenvalues(s);
+  if (!(mu(2) > 0.0) || mu(0) > sym3_detail::kLogClosedFormMaxCond * mu(2)) {
+    return symLogByEigenDecomposition(s);
+  }
+  // W = S/mu2 - I has eigenvalues x1 >= 0 = x2 >= x3 > -1. Newton form of the
+  // interpolating quadratic of log1p at (0, x1, x3) (eq. (6) in another basis):
+  // log S = log(mu2) I + (d1 - x1 d2) W + d2 W^2,
+  // d1 = log1p[0, x1], d2 = log1p[0, x1, x3].
+  const double x1 = (mu(0) - mu(1)) / mu(1);
+  const double x3 = (mu(2) - mu(1)) / mu(1);
+  const double h = x1 - x3;
+  const double d1 = logDivided(x1);
+  double d2;
+  if (h < sym3_detail::kLogSeriesSpread) {
+    // log1p(x)/x = sum_k (-1)^k x^k/(k+1); its divided difference is
+    // sum_{k>=1} (-1)^k h_{k-1}(x1, x3)/(k+1), series through k = 4.
+    d2 = -0.5 + (x1 + x3) / 3.0 - (x1 * x1 + x1 * x3 + x3 * x3) / 4.0 +
+         (x1 + x3) * (x1 * x1 + x3 * x3) / 5.0;
+  } else {
+    d2 = (d1 - logDivided(x3)) / h;
+  }
+  Eigen::Matrix3d w = s / mu(1);
+  w.diagonal().array() -= 1.0;
+  w(1, 0) = w(0, 1);
+  w(2, 0) = w(0, 2);
+  w(2, 1) = w(1, 2);
+  Eigen::Matrix3d r = (d1 - x1 * d2) * w + d2 * symSquare(w);
+  r.diagonal().array() += std::log(mu(1));
+  return r;
+}
+
+}  // namespace tetblend
