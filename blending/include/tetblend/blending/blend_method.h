@@ -1,0 +1,85 @@
+#pragma once
+// The blend methods of the shape blender, selectable by name, and the common
+// interface of a method prepared for one rest mesh and its examples: given a
+// weight vector, produce the target linear map B_j of every tet for the
+// stitch (Kaji–Ochiai §6.2: A'_j(w) = Blend(w, A_1j, ..., A_nj)).
+//
+// Weight convention for every method: with n examples and weights w (any
+// reals), the rest shape has weight 1 - sum(w). Weights 0 give the rest and
+// the k-th unit vector gives example k.
+
+#include <Eigen/Core>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "tetblend/blending/tet_adjacency.h"
+#include "tetblend/blending/tet_maps.h"
+#include "tetblend/core/mesh_types.h"
+
+namespace tetblend {
+
+/// Every blend method. Names (blendMethodName) are those of the command line.
+enum class BlendMethod {
+  kKaji,           ///< "kaji": phi(sum_k w_k psi(F_k)), Kaji–Ochiai §5 Blend
+  kKajiFrechet,    ///< "kaji-frechet": refined weighted Fréchet sum, Kaji–Ochiai Alg. 2
+  kLieBodies,      ///< "liebodies": p0 exp(sum_k w_k log(p0^-1 p_k)), Bansal–Tatu
+  kDualQuaternion, ///< "dq": polar; rotation by DLB (Kavan et al. §3.4), stretch in log space
+  kDib,            ///< "dib": as dq with dual-quaternion iterative blending (Kavan et al. §3.3)
+  kAlexa,          ///< "alexa": exp(sum_k w_k log F_k), Alexa's matrix-log blend
+  kPolarSlerp,     ///< "polar-slerp": polar; quaternion slerp-type rotation blend, linear stretch
+  kLinear,         ///< "linear": (1 - sum w) I + sum_k w_k F_k, then the stitch
+  kVertexLinear,   ///< "vertex-linear": (1 - sum w) x_rest + sum_k w_k x_k, no stitch
+};
+
+/// All methods, in the order above.
+const std::vector<BlendMethod>& allBlendMethods();
+
+/// The command-line name of `method` (e.g. "kaji-frechet").
+std::string blendMethodName(BlendMethod method);
+
+/// The method called `name`. Throws InputError listing the valid names.
+BlendMethod blendMethodFromName(const std::string& name);
+
+/// True for the methods that take logarithms of rotations and so depend on
+/// the rotation-consistency option (kaji, kaji-frechet, liebodies).
+bool usesRotationLogs(BlendMethod method);
+
+/// What a method needs to parametrise the examples once.
+struct BlendInput {
+  const TetMesh* rest = nullptr;         ///< #V vertices, #T tets
+  const RestTetData* restData = nullptr; ///< from restTetData(*rest)
+  const std::vector<Vertices>* examples = nullptr;  ///< n examples, #V by 3 each
+  /// n fields of #T deformation gradients F_kj (deformationGradients()).
+  const std::vector<std::vector<Eigen::Matrix3d>>* gradients = nullptr;
+  const TetAdjacency* adjacency = nullptr;    ///< face adjacency of rest->tets
+  const TetComponents* components = nullptr;  ///< its components
+  /// Choose each tet's rotation logarithm closest to its neighbour's
+  /// (rotation_consistency.h); false takes principal logarithms.
+  bool rotationConsistency = true;
+};
+
+/// A method prepared for one rest mesh and its examples.
+class TetMapBlender {
+public:
+  virtual ~TetMapBlender() = default;
+  /// The method this object implements.
+  virtual BlendMethod method() const = 0;
+  /// Writes the #T target linear maps B_j (3 by 3) for `weights` (one per
+  /// example, any reals) into `targets` (resized). Parallel over tets,
+  /// deterministic. Throws InputError for a wrong weight count and
+  /// DomainError naming the tet where the method cannot blend these weights.
+  virtual void blendTargets(const std::vector<double>& weights,
+                            std::vector<Eigen::Matrix3d>& targets) const = 0;
+};
+
+/// Parametrises the examples of `input` once for `method` (all but
+/// kVertexLinear, which has no per-tet maps: InputError). Throws DomainError
+/// naming the example and tet where an example map has no parameters in the
+/// method (e.g. alexa without a real logarithm).
+std::unique_ptr<TetMapBlender> prepareTetMapBlender(BlendMethod method, const BlendInput& input);
+
+/// Throws InputError unless `weights` has `exampleCount` finite entries.
+void checkWeights(const std::vector<double>& weights, int exampleCount);
+
+}  // namespace tetblend

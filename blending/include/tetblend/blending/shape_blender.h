@@ -1,0 +1,101 @@
+#pragma once
+// The prepared shape blender (Kaji–Ochiai §6.2): built once from a rest tet
+// mesh and n compatible examples, it parametrises every example's per-tet
+// maps once per method and factors the stitch once; then each weight vector
+// costs one per-tet blend, one right-hand side and one back-substitution.
+//
+// Weights: one per example, any reals; the rest has weight 1 - sum(w), so
+// weights 0 give the rest and the k-th unit vector gives example k.
+
+#include <Eigen/Core>
+#include <map>
+#include <memory>
+#include <vector>
+
+#include "tetblend/blending/blend_method.h"
+#include "tetblend/blending/stitch_solver.h"
+#include "tetblend/core/mesh_types.h"
+
+namespace tetblend {
+
+/// Options of ShapeBlender, with their defaults.
+struct ShapeBlenderOptions {
+  /// Methods parametrised at construction; the first is the default of
+  /// blend(weights). More can be added later with ShapeBlender::prepare.
+  std::vector<BlendMethod> methods = {BlendMethod::kKaji};
+  /// Consistent rotation logarithms across neighbouring tets
+  /// (rotation_consistency.h) for kaji, kaji-frechet and liebodies.
+  bool rotationConsistency = true;
+  /// Factorisation of the stitch.
+  StitchOptions stitch;
+};
+
+/// Wall-clock seconds of the parts of one blend.
+struct BlendTimings {
+  double blendSeconds = 0.0;  ///< per-tet target maps (or vertex blend)
+  double rhsSeconds = 0.0;    ///< stitch right-hand side
+  double solveSeconds = 0.0;  ///< back-substitution and centroid placement
+};
+
+/// One blended shape.
+struct BlendResult {
+  BlendMethod method = BlendMethod::kKaji;
+  Vertices vertices;                      ///< #V by 3, the rest's vertex order
+  std::vector<Eigen::Matrix3d> targets;   ///< #T blended maps B_j (empty for vertex-linear)
+  BlendTimings timings;
+};
+
+/// A rest mesh and its examples, parametrised and factored once.
+class ShapeBlender {
+public:
+  /// `rest`: #V vertices, #T positively oriented tets; `examples`: n >= 1
+  /// vertex sets (#V by 3 each) with the rest's tets. Throws InputError for an
+  /// empty example list, a size mismatch, a rest tet with volume <= 0 or an
+  /// example tet with volume <= 0 (naming example, tet and volume), and
+  /// DomainError when a method cannot parametrise an example tet.
+  ShapeBlender(const TetMesh& rest, const std::vector<Vertices>& examples,
+               const ShapeBlenderOptions& options = {});
+  ~ShapeBlender();
+  ShapeBlender(ShapeBlender&&) noexcept;
+  ShapeBlender& operator=(ShapeBlender&&) noexcept;
+
+  /// Parametrises the examples for `method` (no-op if already prepared).
+  void prepare(BlendMethod method);
+  /// True if blend(weights, method) can run without prepare(method).
+  bool isPrepared(BlendMethod method) const;
+
+  /// Blended shape for `weights` with the first method of the options.
+  BlendResult blend(const std::vector<double>& weights) const;
+  /// Blended shape for `weights` with `method`. Throws InputError for a wrong
+  /// weight count or an unprepared method, DomainError (naming the tet) where
+  /// the method cannot blend these weights.
+  BlendResult blend(const std::vector<double>& weights, BlendMethod method) const;
+  /// As blend, reusing the storage of `result`. Not safe to call concurrently.
+  void blendInto(const std::vector<double>& weights, BlendMethod method,
+                 BlendResult& result) const;
+
+  int exampleCount() const;
+  const TetMesh& rest() const;
+  const StitchSolver& stitch() const;
+  const ShapeBlenderOptions& options() const;
+
+  /// Blended component centroids (1 - sum w) c_rest + sum_k w_k c_k (#C by 3).
+  Centroids blendedCentroids(const std::vector<double>& weights) const;
+
+private:
+  TetMesh rest_;
+  std::vector<Vertices> examples_;
+  ShapeBlenderOptions options_;
+  StitchSolver stitch_;
+  Centroids restCentroids_;
+  std::vector<Centroids> exampleCentroids_;
+  std::map<BlendMethod, std::unique_ptr<TetMapBlender>> blenders_;
+};
+
+/// One-shot blend: prepares a ShapeBlender for options.methods[0] and blends
+/// `weights` once. Prefer ShapeBlender for more than one weight vector.
+BlendResult blendShapes(const TetMesh& rest, const std::vector<Vertices>& examples,
+                        const std::vector<double>& weights,
+                        const ShapeBlenderOptions& options = {});
+
+}  // namespace tetblend

@@ -1,0 +1,96 @@
+#pragma once
+// The linear stitch of the shape blender (Kaji–Ochiai §6.2, "patching" the
+// blended per-tet maps; the Poisson-type solve of Sumner–Popović deformation
+// transfer): given a target linear map B_j for every tet, find vertex
+// positions x minimising
+//     E(x) = sum_j vol_j ||grad_j(x) - B_j||_F^2,
+// where grad_j(x) = D_j(x) D_rest,j^-1 is the deformation gradient of tet j.
+// The normal matrix G^T W G (a cotangent Laplacian, the same for x, y and z)
+// depends only on the rest mesh, so it is factored once and every weight
+// vector costs one right-hand side and one back-substitution.
+
+#include <Eigen/Core>
+#include <memory>
+#include <vector>
+
+#include "tetblend/blending/tet_maps.h"
+#include "tetblend/core/mesh_types.h"
+
+namespace tetblend {
+
+/// Sparse Cholesky used for G^T W G.
+enum class StitchBackend {
+  kCholmodSupernodal,    ///< CHOLMOD supernodal LL^T (fastest; needs CHOLMOD at build)
+  kEigenSimplicialLdlt,  ///< Eigen's SimplicialLDLT with AMD ordering (always available)
+};
+
+/// Options of the stitch solver.
+struct StitchOptions {
+  /// Factorisation; kCholmodSupernodal silently becomes kEigenSimplicialLdlt
+  /// when tetblend was built without CHOLMOD (see StitchSolver::backend()).
+  StitchBackend backend = StitchBackend::kCholmodSupernodal;
+};
+
+/// Per-component centroids, #C by 3 (one row per vertex component).
+using Centroids = Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>;
+
+/// Seconds spent in the two halves of StitchSolver::solveInto.
+struct StitchTimings {
+  double rhsSeconds = 0.0;    ///< assembling G^T W B (parallel)
+  double solveSeconds = 0.0;  ///< back-substitution and centroid placement
+};
+
+/// Factors the stitch once for a rest mesh, then solves for any target field.
+/// Vertex components are the classes of "shares a tet" (a vertex in no tet is
+/// its own component); each component's lowest-index vertex is pinned to
+/// remove the translation null space, and after the solve each component is
+/// translated so that its vertex centroid (mean of its vertices) equals the
+/// centroid the caller asks for. solveInto is deterministic (the parallel
+/// right-hand side sums each vertex's tets in a fixed order) but not safe to
+/// call concurrently on one solver (the factorisation keeps a workspace).
+class StitchSolver {
+public:
+  /// Builds the gradient operator of `rest` (#V by 3 vertices, #T by 4 tets)
+  /// and factors G^T W G. Throws InputError for a rest tet with volume <= 0
+  /// and NumericalError if the factorisation fails.
+  explicit StitchSolver(const TetMesh& rest, const StitchOptions& options = {});
+  ~StitchSolver();
+  StitchSolver(StitchSolver&&) noexcept;
+  StitchSolver& operator=(StitchSolver&&) noexcept;
+
+  int vertexCount() const;
+  int tetCount() const;
+  /// Number of vertex components C.
+  int componentCount() const;
+  /// Component label (0..C-1) of each of the #V vertices.
+  const std::vector<int>& vertexComponent() const;
+  /// The rest per-tet data (inverse edge matrices, volumes) the solver uses.
+  const RestTetData& restData() const;
+  /// The backend actually used.
+  StitchBackend backend() const;
+
+  /// Mean of the vertices of each component (#C by 3) of `vertices` (#V by 3).
+  Centroids componentCentroids(const Vertices& vertices) const;
+
+  /// Minimises E for `targets` (#T linear maps B_j, 3 by 3) and places each
+  /// component's centroid at the matching row of `centroids` (#C by 3).
+  /// Returns #V by 3 positions. Throws InputError on size mismatches.
+  Vertices solve(const std::vector<Eigen::Matrix3d>& targets, const Centroids& centroids) const;
+
+  /// As solve, writing into `result` (resized if needed, reused otherwise) and
+  /// optionally reporting the time of each half in `timings`.
+  void solveInto(const std::vector<Eigen::Matrix3d>& targets, const Centroids& centroids,
+                 Vertices& result, StitchTimings* timings = nullptr) const;
+
+  /// Deformation gradient grad_j(x) (3 by 3) of tet j for positions `x`.
+  Eigen::Matrix3d gradient(const Vertices& x, int tet) const;
+
+  /// The stitch energy E(x) = sum_j vol_j ||grad_j(x) - B_j||_F^2.
+  double energy(const Vertices& x, const std::vector<Eigen::Matrix3d>& targets) const;
+
+private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace tetblend

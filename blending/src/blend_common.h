@@ -1,0 +1,51 @@
+#pragma once
+// Helpers shared by the blend-method families (private to tetblend_blending).
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include <Eigen/Core>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "tetblend/blending/blend_method.h"
+#include "tetblend/core/error.h"
+
+namespace tetblend {
+namespace blend_detail {
+
+/// Tets per TBB task in the per-tet loops.
+constexpr int kTetGrain = 1024;
+
+/// Runs body(j) for j in [0, count) in parallel; each j writes only its own
+/// outputs, so the result does not depend on the schedule.
+template <typename Body>
+void forEachTet(int count, const Body& body) {
+  tbb::parallel_for(tbb::blocked_range<int>(0, count, kTetGrain),
+                    [&](const tbb::blocked_range<int>& range) {
+                      for (int j = range.begin(); j != range.end(); ++j) body(j);
+                    });
+}
+
+/// Number of tets and examples of a BlendInput, after checking it is complete.
+struct InputSizes {
+  int tets = 0;
+  int examples = 0;
+};
+InputSizes checkInput(const BlendInput& input);
+
+/// The rest weight 1 - sum(w).
+inline double restWeight(const std::vector<double>& weights) {
+  double sum = 0.0;
+  for (double w : weights) sum += w;
+  return 1.0 - sum;
+}
+
+/// Rethrows a DomainError from a core kernel with the method, example (or -1
+/// for a blend) and tet named.
+[[noreturn]] void rethrowForTet(const std::string& method, int example, int tet,
+                                const std::exception& error);
+
+}  // namespace blend_detail
+}  // namespace tetblend

@@ -1,0 +1,119 @@
+#include "tetblend/blending/blend_method.h"
+
+#include <cmath>
+#include <sstream>
+
+#include "blend_common.h"
+#include "tetblend/blending/baseline_blend.h"
+#include "tetblend/core/error.h"
+
+namespace tetblend {
+namespace {
+
+struct NamedMethod {
+  BlendMethod method;
+  const char* name;
+};
+
+constexpr NamedMethod kMethodNames[] = {
+    {BlendMethod::kKaji, "kaji"},
+    {BlendMethod::kKajiFrechet, "kaji-frechet"},
+    {BlendMethod::kLieBodies, "liebodies"},
+    {BlendMethod::kDualQuaternion, "dq"},
+    {BlendMethod::kDib, "dib"},
+    {BlendMethod::kAlexa, "alexa"},
+    {BlendMethod::kPolarSlerp, "polar-slerp"},
+    {BlendMethod::kLinear, "linear"},
+    {BlendMethod::kVertexLinear, "vertex-linear"},
+};
+
+}  // namespace
+
+const std::vector<BlendMethod>& allBlendMethods() {
+  static const std::vector<BlendMethod> methods = [] {
+    std::vector<BlendMethod> all;
+    for (const NamedMethod& named : kMethodNames) all.push_back(named.method);
+    return all;
+  }();
+  return methods;
+}
+
+std::string blendMethodName(BlendMethod method) {
+  for (const NamedMethod& named : kMethodNames) {
+    if (named.method == method) return named.name;
+  }
+  throw InputError("unknown blend method value " + std::to_string(static_cast<int>(method)));
+}
+
+BlendMethod blendMethodFromName(const std::string& name) {
+  std::string valid;
+  for (const NamedMethod& named : kMethodNames) {
+    if (name == named.name) return named.method;
+    valid += valid.empty() ? named.name : std::string(", ") + named.name;
+  }
+  throw InputError("unknown blend method '" + name + "': use one of " + valid);
+}
+
+bool usesRotationLogs(BlendMethod method) {
+  return method == BlendMethod::kKaji || method == BlendMethod::kKajiFrechet ||
+         method == BlendMethod::kLieBodies;
+}
+
+void checkWeights(const std::vector<double>& weights, int exampleCount) {
+  if (static_cast<int>(weights.size()) != exampleCount) {
+    std::ostringstream message;
+    message << "blend: " << weights.size() << " weights given for " << exampleCount
+            << " examples: give one weight per example (the rest gets 1 - sum)";
+    throw InputError(message.str());
+  }
+  for (size_t k = 0; k < weights.size(); ++k) {
+    if (!std::isfinite(weights[k])) {
+      std::ostringstream message;
+      message << "blend: weight " << k << " is " << weights[k] << ": weights must be finite";
+      throw InputError(message.str());
+    }
+  }
+}
+
+std::unique_ptr<TetMapBlender> prepareTetMapBlender(BlendMethod method, const BlendInput& input) {
+  switch (method) {
+    case BlendMethod::kLinear:
+    case BlendMethod::kAlexa:
+    case BlendMethod::kPolarSlerp:
+      return prepareBaselineBlender(method, input);
+    case BlendMethod::kVertexLinear:
+      throw InputError("vertex-linear blends vertex positions and has no per-tet maps");
+    default:
+      break;
+  }
+  throw InputError("blend method '" + blendMethodName(method) + "' is not available in this build");
+}
+
+namespace blend_detail {
+
+InputSizes checkInput(const BlendInput& input) {
+  if (input.rest == nullptr || input.restData == nullptr || input.examples == nullptr ||
+      input.gradients == nullptr || input.adjacency == nullptr || input.components == nullptr) {
+    throw InputError("blend: incomplete BlendInput (every pointer must be set)");
+  }
+  InputSizes sizes;
+  sizes.tets = static_cast<int>(input.rest->tets.rows());
+  sizes.examples = static_cast<int>(input.gradients->size());
+  if (static_cast<int>(input.examples->size()) != sizes.examples) {
+    throw InputError("blend: BlendInput has different example and gradient-field counts");
+  }
+  return sizes;
+}
+
+void rethrowForTet(const std::string& method, int example, int tet, const std::exception& error) {
+  std::ostringstream message;
+  message << method << ": ";
+  if (example >= 0) {
+    message << "example " << example << ", ";
+  }
+  message << "tet " << tet << ": " << error.what();
+  throw DomainError(message.str());
+}
+
+}  // namespace blend_detail
+}  // namespace tetblend

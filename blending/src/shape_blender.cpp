@@ -1,0 +1,142 @@
+#include "tetblend/blending/shape_blender.h"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include <chrono>
+#include <sstream>
+
+#include "tetblend/core/error.h"
+
+namespace tetblend {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double secondsSince(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+}  // namespace
+
+ShapeBlender::ShapeBlender(const TetMesh& rest, const std::vector<Vertices>& examples,
+                           const ShapeBlenderOptions& options)
+    : rest_(rest), examples_(examples), options_(options), stitch_(rest, options.stitch) {
+  if (examples_.empty()) throw InputError("shape blender: give at least one example");
+  if (options_.methods.empty()) throw InputError("shape blender: options.methods is empty");
+  restCentroids_ = stitch_.componentCentroids(rest_.vertices);
+  for (size_t k = 0; k < examples_.size(); ++k) {
+    if (examples_[k].rows() != rest_.vertices.rows()) {
+      std::ostringstream message;
+      message << "example " << k << " has " << examples_[k].rows()
+              << " vertices but the rest mesh has " << rest_.vertices.rows()
+              << ": the meshes must be compatible";
+      throw InputError(message.str());
+    }
+    exampleCentroids_.push_back(stitch_.componentCentroids(examples_[k]));
+  }
+  for (BlendMethod method : options_.methods) prepare(method);
+}
+
+ShapeBlender::~ShapeBlender() = default;
+ShapeBlender::ShapeBlender(ShapeBlender&&) noexcept = default;
+ShapeBlender& ShapeBlender::operator=(ShapeBlender&&) noexcept = default;
+
+void ShapeBlender::prepare(BlendMethod method) {
+  if (isPrepared(method)) return;
+  if (method == BlendMethod::kVertexLinear) {
+    blenders_[method] = nullptr;
+    return;
+  }
+  // The gradient fields and the adjacency are only needed while preparing.
+  std::vector<std::vector<Eigen::Matrix3d>> gradients;
+  for (size_t k = 0; k < examples_.size(); ++k) {
+    gradients.push_back(
+        deformationGradients(rest_, stitch_.restData(), examples_[k], static_cast<int>(k)));
+  }
+  const TetAdjacency adjacency = buildTetAdjacency(rest_.tets);
+  const TetComponents components = tetComponents(adjacency);
+  BlendInput input;
+  input.rest = &rest_;
+  input.restData = &stitch_.restData();
+  input.examples = &examples_;
+  input.gradients = &gradients;
+  input.adjacency = &adjacency;
+  input.components = &components;
+  input.rotationConsistency = options_.rotationConsistency;
+  blenders_[method] = prepareTetMapBlender(method, input);
+}
+
+bool ShapeBlender::isPrepared(BlendMethod method) const { return blenders_.count(method) > 0; }
+
+BlendResult ShapeBlender::blend(const std::vector<double>& weights) const {
+  return blend(weights, options_.methods.front());
+}
+
+BlendResult ShapeBlender::blend(const std::vector<double>& weights, BlendMethod method) const {
+  BlendResult result;
+  blendInto(weights, method, result);
+  return result;
+}
+
+Centroids ShapeBlender::blendedCentroids(const std::vector<double>& weights) const {
+  checkWeights(weights, exampleCount());
+  double restWeight = 1.0;
+  for (double w : weights) restWeight -= w;
+  Centroids centroids = restWeight * restCentroids_;
+  for (int k = 0; k < exampleCount(); ++k) centroids += weights[k] * exampleCentroids_[k];
+  return centroids;
+}
+
+void ShapeBlender::blendInto(const std::vector<double>& weights, BlendMethod method,
+                             BlendResult& result) const {
+  checkWeights(weights, exampleCount());
+  const auto found = blenders_.find(method);
+  if (found == blenders_.end()) {
+    throw InputError("shape blender: method '" + blendMethodName(method) +
+                     "' was not prepared: add it to ShapeBlenderOptions::methods or call "
+                     "prepare()");
+  }
+  result.method = method;
+  result.timings = BlendTimings{};
+  auto start = Clock::now();
+  if (method == BlendMethod::kVertexLinear) {
+    double restWeight = 1.0;
+    for (double w : weights) restWeight -= w;
+    const auto rows = rest_.vertices.rows();
+    result.vertices.resize(rows, 3);
+    result.targets.clear();
+    tbb::parallel_for(tbb::blocked_range<Eigen::Index>(0, rows, 4096),
+                      [&](const tbb::blocked_range<Eigen::Index>& range) {
+                        for (Eigen::Index v = range.begin(); v != range.end(); ++v) {
+                          Eigen::RowVector3d sum = restWeight * rest_.vertices.row(v);
+                          for (int k = 0; k < exampleCount(); ++k) {
+                            sum += weights[k] * examples_[k].row(v);
+                          }
+                          result.vertices.row(v) = sum;
+                        }
+                      });
+    result.timings.blendSeconds = secondsSince(start);
+    return;
+  }
+  found->second->blendTargets(weights, result.targets);
+  result.timings.blendSeconds = secondsSince(start);
+  StitchTimings stitchTimings;
+  stitch_.solveInto(result.targets, blendedCentroids(weights), result.vertices, &stitchTimings);
+  result.timings.rhsSeconds = stitchTimings.rhsSeconds;
+  result.timings.solveSeconds = stitchTimings.solveSeconds;
+}
+
+int ShapeBlender::exampleCount() const { return static_cast<int>(examples_.size()); }
+const TetMesh& ShapeBlender::rest() const { return rest_; }
+const StitchSolver& ShapeBlender::stitch() const { return stitch_; }
+const ShapeBlenderOptions& ShapeBlender::options() const { return options_; }
+
+BlendResult blendShapes(const TetMesh& rest, const std::vector<Vertices>& examples,
+                        const std::vector<double>& weights, const ShapeBlenderOptions& options) {
+  ShapeBlenderOptions single = options;
+  if (!single.methods.empty()) single.methods.resize(1);
+  return ShapeBlender(rest, examples, single).blend(weights);
+}
+
+}  // namespace tetblend

@@ -1,0 +1,251 @@
+#include "tetblend/blending/stitch_solver.h"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include <Eigen/SparseCholesky>
+#include <Eigen/SparseCore>
+#include <chrono>
+#include <numeric>
+#include <sstream>
+
+#include "tetblend/core/error.h"
+#include "tetblend/core/tet_geometry.h"
+
+#ifdef TETBLEND_HAVE_CHOLMOD
+#include <Eigen/CholmodSupport>
+#endif
+
+namespace tetblend {
+namespace {
+
+using SparseMatrix = Eigen::SparseMatrix<double>;
+using Clock = std::chrono::steady_clock;
+
+double secondsSince(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+// Gradient coefficients g_i (Sumner–Popović): grad_j(x) = sum_i x_i g_i^T,
+// with g_i = row i-1 of D_rest^-1 for i = 1..3 and g_0 = -(g_1 + g_2 + g_3).
+Eigen::Vector3d cornerGradient(const Eigen::Matrix3d& inverseEdges, int corner) {
+  if (corner == 0) return -inverseEdges.colwise().sum().transpose();
+  return inverseEdges.row(corner - 1).transpose();
+}
+
+int findRoot(std::vector<int>& parent, int v) {
+  while (parent[v] != v) {
+    parent[v] = parent[parent[v]];
+    v = parent[v];
+  }
+  return v;
+}
+
+}  // namespace
+
+struct StitchSolver::Impl {
+  Tets tets;
+  RestTetData rest;
+  std::vector<int> component;      // #V labels
+  std::vector<int> componentSize;  // #C vertex counts
+  std::vector<int> reducedIndex;   // #V, -1 for pinned vertices
+  std::vector<int> freeVertices;   // reduced index -> vertex
+  // Vertex -> incident (tet * 4 + corner), in CSR form, ascending tet order.
+  std::vector<int> incidenceStart;
+  std::vector<int> incidence;
+  StitchBackend backend = StitchBackend::kEigenSimplicialLdlt;
+  Eigen::SimplicialLDLT<SparseMatrix, Eigen::Lower, Eigen::AMDOrdering<int>> ldlt;
+#ifdef TETBLEND_HAVE_CHOLMOD
+  Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower> cholmod;
+#endif
+  mutable Eigen::Matrix<double, Eigen::Dynamic, 3> rhs;
+  mutable Eigen::Matrix<double, Eigen::Dynamic, 3> reducedSolution;
+
+  void buildComponents(int vertexCount) {
+    std::vector<int> parent(vertexCount);
+    std::iota(parent.begin(), parent.end(), 0);
+    for (Eigen::Index j = 0; j < tets.rows(); ++j) {
+      const int a = findRoot(parent, tets(j, 0));
+      for (int c = 1; c < 4; ++c) {
+        const int b = findRoot(parent, tets(j, c));
+        if (a != b) parent[b] = a;
+      }
+    }
+    component.assign(vertexCount, -1);
+    reducedIndex.assign(vertexCount, -1);
+    std::vector<int> rootLabel(vertexCount, -1);
+    int count = 0;
+    for (int v = 0; v < vertexCount; ++v) {
+      const int root = findRoot(parent, v);
+      if (rootLabel[root] < 0) {
+        // The first (lowest-index) vertex of a component is its pinned vertex.
+        rootLabel[root] = count++;
+        componentSize.push_back(0);
+      } else {
+        reducedIndex[v] = static_cast<int>(freeVertices.size());
+        freeVertices.push_back(v);
+      }
+      component[v] = rootLabel[root];
+      ++componentSize[component[v]];
+    }
+  }
+
+  void buildIncidence(int vertexCount) {
+    incidenceStart.assign(vertexCount + 1, 0);
+    for (Eigen::Index j = 0; j < tets.rows(); ++j) {
+      for (int c = 0; c < 4; ++c) ++incidenceStart[tets(j, c) + 1];
+    }
+    std::partial_sum(incidenceStart.begin(), incidenceStart.end(), incidenceStart.begin());
+    incidence.resize(4 * static_cast<size_t>(tets.rows()));
+    std::vector<int> fill(incidenceStart.begin(), incidenceStart.end() - 1);
+    for (Eigen::Index j = 0; j < tets.rows(); ++j) {
+      for (int c = 0; c < 4; ++c) incidence[fill[tets(j, c)]++] = static_cast<int>(4 * j + c);
+    }
+  }
+
+  SparseMatrix reducedNormalMatrix() const {
+    std::vector<Eigen::Triplet<double>> triplets;
+    triplets.reserve(10 * static_cast<size_t>(tets.rows()));
+    for (Eigen::Index j = 0; j < tets.rows(); ++j) {
+      Eigen::Vector3d g[4];
+      for (int c = 0; c < 4; ++c) g[c] = cornerGradient(rest.inverseEdges[j], c);
+      for (int a = 0; a < 4; ++a) {
+        const int ra = reducedIndex[tets(j, a)];
+        if (ra < 0) continue;
+        for (int b = 0; b < 4; ++b) {
+          const int rb = reducedIndex[tets(j, b)];
+          if (rb < 0 || rb < ra) continue;  // lower triangle (row >= column) only
+          triplets.emplace_back(rb, ra, rest.volumes[j] * g[a].dot(g[b]));
+        }
+      }
+    }
+    const auto n = static_cast<Eigen::Index>(freeVertices.size());
+    SparseMatrix matrix(n, n);
+    matrix.setFromTriplets(triplets.begin(), triplets.end());
+    return matrix;
+  }
+
+  template <typename Solver>
+  void factor(Solver& solver, const SparseMatrix& matrix) {
+    solver.compute(matrix);
+    if (solver.info() != Eigen::Success) {
+      throw NumericalError(
+          "stitch: factoring G^T W G failed (the rest mesh may have near-degenerate tets)");
+    }
+  }
+};
+
+StitchSolver::StitchSolver(const TetMesh& rest, const StitchOptions& options)
+    : impl_(std::make_unique<Impl>()) {
+  Impl& m = *impl_;
+  m.tets = rest.tets;
+  m.rest = restTetData(rest);
+  const int vertexCount = static_cast<int>(rest.vertices.rows());
+  m.buildComponents(vertexCount);
+  m.buildIncidence(vertexCount);
+  const SparseMatrix matrix = m.reducedNormalMatrix();
+#ifdef TETBLEND_HAVE_CHOLMOD
+  if (options.backend == StitchBackend::kCholmodSupernodal) {
+    m.backend = StitchBackend::kCholmodSupernodal;
+    m.factor(m.cholmod, matrix);
+    return;
+  }
+#else
+  (void)options;
+#endif
+  m.backend = StitchBackend::kEigenSimplicialLdlt;
+  m.factor(m.ldlt, matrix);
+}
+
+StitchSolver::~StitchSolver() = default;
+StitchSolver::StitchSolver(StitchSolver&&) noexcept = default;
+StitchSolver& StitchSolver::operator=(StitchSolver&&) noexcept = default;
+
+int StitchSolver::vertexCount() const { return static_cast<int>(impl_->component.size()); }
+int StitchSolver::tetCount() const { return static_cast<int>(impl_->tets.rows()); }
+int StitchSolver::componentCount() const {
+  return static_cast<int>(impl_->componentSize.size());
+}
+const std::vector<int>& StitchSolver::vertexComponent() const { return impl_->component; }
+const RestTetData& StitchSolver::restData() const { return impl_->rest; }
+StitchBackend StitchSolver::backend() const { return impl_->backend; }
+
+Centroids StitchSolver::componentCentroids(const Vertices& vertices) const {
+  if (vertices.rows() != vertexCount()) {
+    std::ostringstream message;
+    message << "stitch: " << vertices.rows() << " vertices given, the rest mesh has "
+            << vertexCount();
+    throw InputError(message.str());
+  }
+  Centroids centroids = Centroids::Zero(componentCount(), 3);
+  for (int v = 0; v < vertexCount(); ++v) centroids.row(impl_->component[v]) += vertices.row(v);
+  for (int c = 0; c < componentCount(); ++c) centroids.row(c) /= impl_->componentSize[c];
+  return centroids;
+}
+
+Vertices StitchSolver::solve(const std::vector<Eigen::Matrix3d>& targets,
+                             const Centroids& centroids) const {
+  Vertices result;
+  solveInto(targets, centroids, result);
+  return result;
+}
+
+void StitchSolver::solveInto(const std::vector<Eigen::Matrix3d>& targets,
+                             const Centroids& centroids, Vertices& result,
+                             StitchTimings* timings) const {
+  const Impl& m = *impl_;
+  if (static_cast<int>(targets.size()) != tetCount() || centroids.rows() != componentCount()) {
+    std::ostringstream message;
+    message << "stitch: got " << targets.size() << " target maps and " << centroids.rows()
+            << " centroids for a mesh with " << tetCount() << " tets and " << componentCount()
+            << " components";
+    throw InputError(message.str());
+  }
+  auto start = Clock::now();
+  const auto freeCount = static_cast<Eigen::Index>(m.freeVertices.size());
+  m.rhs.resize(freeCount, 3);
+  tbb::parallel_for(tbb::blocked_range<Eigen::Index>(0, freeCount, 2048),
+                    [&](const tbb::blocked_range<Eigen::Index>& range) {
+                      for (Eigen::Index r = range.begin(); r != range.end(); ++r) {
+                        const int v = m.freeVertices[r];
+                        Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+                        for (int k = m.incidenceStart[v]; k < m.incidenceStart[v + 1]; ++k) {
+                          const int tet = m.incidence[k] >> 2;
+                          const int corner = m.incidence[k] & 3;
+                          sum += m.rest.volumes[tet] *
+                                 (targets[tet] * cornerGradient(m.rest.inverseEdges[tet], corner));
+                        }
+                        m.rhs.row(r) = sum.transpose();
+                      }
+                    });
+  if (timings != nullptr) timings->rhsSeconds = secondsSince(start);
+  start = Clock::now();
+#ifdef TETBLEND_HAVE_CHOLMOD
+  if (m.backend == StitchBackend::kCholmodSupernodal) {
+    m.reducedSolution = m.cholmod.solve(m.rhs);
+  } else {
+    m.reducedSolution = m.ldlt.solve(m.rhs);
+  }
+#else
+  m.reducedSolution = m.ldlt.solve(m.rhs);
+#endif
+  result.setZero(vertexCount(), 3);
+  for (Eigen::Index r = 0; r < freeCount; ++r) result.row(m.freeVertices[r]) = m.reducedSolution.row(r);
+  const Centroids shift = centroids - componentCentroids(result);
+  for (int v = 0; v < vertexCount(); ++v) result.row(v) += shift.row(m.component[v]);
+  if (timings != nullptr) timings->solveSeconds = secondsSince(start);
+}
+
+Eigen::Matrix3d StitchSolver::gradient(const Vertices& x, int tet) const {
+  return tetEdgeMatrix(x, impl_->tets.row(tet)) * impl_->rest.inverseEdges[tet];
+}
+
+double StitchSolver::energy(const Vertices& x, const std::vector<Eigen::Matrix3d>& targets) const {
+  double sum = 0.0;
+  for (int j = 0; j < tetCount(); ++j) {
+    sum += impl_->rest.volumes[j] * (gradient(x, j) - targets[j]).squaredNorm();
+  }
+  return sum;
+}
+
+}  // namespace tetblend
