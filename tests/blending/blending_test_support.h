@@ -1,0 +1,37 @@
+#pragma once
+// Shared fixtures of the blending tests: the seed of the random tests and
+// small procedural examples.
+
+#include <cstdlib>
+#include <iostream>
+#include <random>
+#include <string>
+
+#include "tetblend/core/mesh_types.h"
+
+namespace tetblend::testing {
+
+/// Seed of the random tests: TETBLEND_SEED if set, else a fixed default. The
+/// caller prints it (SCOPED_TRACE) so that a failure can be replayed.
+inline unsigned testSeed() {
+  constexpr unsigned kDefaultSeed = 20240611u;
+  const char* env = std::getenv("TETBLEND_SEED");
+  return env != nullptr ? static_cast<unsigned>(std::stoul(env)) : kDefaultSeed;
+}
+
+/// A smooth non-affine deformation of `v` with amplitude `amplitude` (units
+/// of v): small enough on a unit-scale mesh to keep every tet positive.
+inline Vertices smoothWarp(const Vertices& v, double amplitude, std::mt19937& rng) {
+  std::uniform_real_distribution<double> phase(0.0, 6.283185307179586);
+  const double a = phase(rng), b = phase(rng), c = phase(rng);
+  Vertices out = v;
+  for (Eigen::Index i = 0; i < v.rows(); ++i) {
+    const double x = v(i, 0), y = v(i, 1), z = v(i, 2);
+    out(i, 0) += amplitude * std::sin(1.3 * y + a) * std::cos(0.7 * z);
+    out(i, 1) += amplitude * std::sin(1.1 * z + b) * std::cos(0.9 * x);
+    out(i, 2) += amplitude * std::sin(0.8 * x + c) * std::cos(1.2 * y);
+  }
+  return out;
+}
+
+}  // namespace tetblend::testing
