@@ -1,0 +1,137 @@
+// Medit ascii .mesh (INRIA libMeshb keywords): "MeshVersionFormatted v",
+// "Dimension 3", "Vertices n" with n × (x y z ref), "Tetrahedra n" with
+// n × (v0 v1 v2 v3 ref), 1-based, "End". Sections of boundary entities
+// (Triangles, Edges, Corners, ...) are skipped; other volume cells are refused.
+
+#include <string>
+#include <string_view>
+
+#include "formats.h"
+#include "tetblend/core/error.h"
+#include "text_parsing.h"
+
+namespace tetblend::detail {
+namespace {
+
+// Number of values per entry of the sections that are skipped.
+int skippedEntrySize(std::string_view keyword) {
+  static const struct {
+    const char* keyword;
+    int size;
+  } kSections[] = {
+      {"Edges", 3},   {"Triangles", 4},        {"Quadrilaterals", 5}, {"Corners", 1},
+      {"Ridges", 1},  {"RequiredVertices", 1}, {"RequiredEdges", 1},  {"RequiredTriangles", 1},
+      {"Normals", 3}, {"NormalAtVertices", 2}, {"Tangents", 3},       {"TangentAtVertices", 2}};
+  for (const auto& s : kSections) {
+    if (keyword == s.keyword) return s.size;
+  }
+  return -1;
+}
+
+}  // namespace
+
+TetMesh readMedit(const std::string& path) {
+  const std::string text = readFileBytes(path);
+  TextTokens tokens(text);
+  const auto nextToken = [&](const std::string& what) {
+    std::string_view token;
+    if (!tokens.next(token)) {
+      throwAtLine(path, tokens.lineNumber(),
+                  "file ends before " + what + ": the file is truncated");
+    }
+    return token;
+  };
+  const auto nextCount = [&](const std::string& what) {
+    return parseCount(nextToken(what), path, tokens.lineNumber(), what);
+  };
+  TetMesh mesh;
+  mesh.vertices.resize(0, 3);
+  mesh.tets.resize(0, 4);
+  bool haveVertices = false;
+  std::string_view keyword;
+  while (tokens.next(keyword)) {
+    const std::size_t line = tokens.lineNumber();
+    if (keyword == "End") break;
+    if (keyword == "MeshVersionFormatted") {
+      nextToken("the mesh version");
+    } else if (keyword == "Dimension") {
+      const std::string_view d = nextToken("the dimension");
+      if (parseInteger(d, path, tokens.lineNumber(), "dimension") != 3) {
+        throwAtLine(path, tokens.lineNumber(),
+                    "Dimension " + std::string(d) + ": only 3D meshes are supported");
+      }
+    } else if (keyword == "Vertices") {
+      const int count = nextCount("the vertex count");
+      mesh.vertices.resize(count, 3);
+      for (int v = 0; v < count; ++v) {
+        Eigen::RowVector3d p;
+        for (int c = 0; c < 3; ++c) {
+          p[c] = parseDouble(nextToken("vertex " + std::to_string(v)), path, tokens.lineNumber(),
+                             "coordinate of vertex " + std::to_string(v));
+        }
+        checkFiniteVertex(p, path, std::to_string(tokens.lineNumber()), v);
+        mesh.vertices.row(v) = p;
+        nextToken("the reference of vertex " + std::to_string(v));
+      }
+      haveVertices = true;
+    } else if (keyword == "Tetrahedra") {
+      if (!haveVertices) throwAtLine(path, line, "Tetrahedra before Vertices: fix the file");
+      const int count = nextCount("the tet count");
+      mesh.tets.resize(count, 4);
+      for (int t = 0; t < count; ++t) {
+        const std::string element = "tet " + std::to_string(t) + " (0-based)";
+        for (int c = 0; c < 4; ++c) {
+          const long long index = parseInteger(nextToken(element), path, tokens.lineNumber(),
+                                               "vertex index of " + element);
+          mesh.tets(t, c) = checkedIndex(index, 1, static_cast<int>(mesh.vertices.rows()), path,
+                                         tokens.lineNumber(), element);
+        }
+        nextToken("the reference of " + element);
+      }
+    } else if (keyword == "Hexahedra" || keyword == "Prisms" || keyword == "Pyramids") {
+      throwAtLine(path, line,
+                  "section '" + std::string(keyword) +
+                      "': only tetrahedra are supported; convert the cells to tets");
+    } else {
+      const int size = skippedEntrySize(keyword);
+      if (size < 0) {
+        throwAtLine(path, line,
+                    "unknown keyword '" + std::string(keyword) +
+                        "': not an ascii Medit .mesh file tetblend can read");
+      }
+      const int count = nextCount("the " + std::string(keyword) + " count");
+      for (long long i = 0; i < static_cast<long long>(count) * size; ++i) {
+        nextToken("the end of section " + std::string(keyword));
+      }
+    }
+  }
+  return mesh;
+}
+
+void writeMedit(const std::string& path, const TetMesh& mesh) {
+  checkMeshForWriting(mesh, path);
+  std::string out = "MeshVersionFormatted 2\nDimension 3\nVertices\n";
+  appendInteger(out, mesh.vertices.rows());
+  out += '\n';
+  for (Eigen::Index v = 0; v < mesh.vertices.rows(); ++v) {
+    for (int c = 0; c < 3; ++c) {
+      appendDouble(out, mesh.vertices(v, c));
+      out += ' ';
+    }
+    out += "0\n";
+  }
+  out += "Tetrahedra\n";
+  appendInteger(out, mesh.tets.rows());
+  out += '\n';
+  for (Eigen::Index t = 0; t < mesh.tets.rows(); ++t) {
+    for (int c = 0; c < 4; ++c) {
+      appendInteger(out, mesh.tets(t, c) + 1LL);
+      out += ' ';
+    }
+    out += "0\n";
+  }
+  out += "End\n";
+  writeBytesAtomically(path, out);
+}
+
+}  // namespace tetblend::detail

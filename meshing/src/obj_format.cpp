@@ -1,0 +1,99 @@
+// Wavefront OBJ: "v x y z [w | r g b]" vertices and "f a b c" faces, where a
+// corner may be written i, i/t, i//n or i/t/n and negative indices count back
+// from the last vertex read so far. Every other statement (vt, vn, o, g, s,
+// usemtl, mtllib, l, ...) is ignored.
+
+#include <string>
+#include <vector>
+
+#include "formats.h"
+#include "text_parsing.h"
+
+namespace tetblend::detail {
+
+SurfaceMesh readObj(const std::string& path) {
+  const std::string text = readFileBytes(path);
+  TextLines lines(text);
+  std::vector<Eigen::RowVector3d> positions;
+  struct Face {
+    long long corner[3];
+    std::size_t line;
+    std::size_t verticesBefore;
+  };
+  std::vector<Face> faces;
+  while (lines.next()) {
+    const auto& tokens = lines.tokens();
+    if (tokens[0] == "v") {
+      positions.push_back(
+          parseVertex(tokens, 1, path, lines.lineNumber(), static_cast<int>(positions.size())));
+    } else if (tokens[0] == "f") {
+      const std::size_t corners = tokens.size() - 1;
+      if (corners != 3) {
+        throwAtLine(path, lines.lineNumber(),
+                    "face " + std::to_string(faces.size()) + " (0-based) has " +
+                        std::to_string(corners) +
+                        " vertices: " + (corners > 3 ? "triangulate it first" : "a face needs 3"));
+      }
+      Face face{{0, 0, 0}, lines.lineNumber(), positions.size()};
+      for (int c = 0; c < 3; ++c) {
+        const std::string_view corner = tokens[1 + c];
+        face.corner[c] = parseInteger(corner.substr(0, corner.find('/')), path, lines.lineNumber(),
+                                      "vertex index of face " + std::to_string(faces.size()));
+      }
+      faces.push_back(face);
+    }
+  }
+  SurfaceMesh mesh;
+  mesh.vertices.resize(static_cast<Eigen::Index>(positions.size()), 3);
+  for (std::size_t v = 0; v < positions.size(); ++v) {
+    mesh.vertices.row(static_cast<Eigen::Index>(v)) = positions[v];
+  }
+  const int count = static_cast<int>(positions.size());
+  mesh.triangles.resize(static_cast<Eigen::Index>(faces.size()), 3);
+  for (std::size_t f = 0; f < faces.size(); ++f) {
+    const std::string element = "face " + std::to_string(f) + " (0-based)";
+    for (int c = 0; c < 3; ++c) {
+      long long index = faces[f].corner[c];
+      if (index < 0) {
+        // Relative index: -1 is the last vertex defined before this face.
+        const long long resolved = static_cast<long long>(faces[f].verticesBefore) + index + 1;
+        if (resolved < 1) {
+          throwAtLine(path, faces[f].line,
+                      element + ": relative index " + std::to_string(index) + " reaches before " +
+                          "the first vertex (only " + std::to_string(faces[f].verticesBefore) +
+                          " defined so far): fix the face");
+        }
+        index = resolved;
+      }
+      mesh.triangles(static_cast<Eigen::Index>(f), c) =
+          checkedIndex(index, 1, count, path, faces[f].line, element);
+    }
+  }
+  return mesh;
+}
+
+void writeObj(const std::string& path, const SurfaceMesh& mesh) {
+  checkMeshForWriting(mesh, path);
+  std::string out;
+  out.reserve(static_cast<std::size_t>(mesh.vertices.rows() * 64 + mesh.triangles.rows() * 32));
+  out += "# written by tetblend\n";
+  for (Eigen::Index v = 0; v < mesh.vertices.rows(); ++v) {
+    out += 'v';
+    for (int c = 0; c < 3; ++c) {
+      out += ' ';
+      appendDouble(out, mesh.vertices(v, c));
+    }
+    out += '\n';
+  }
+  for (Eigen::Index f = 0; f < mesh.triangles.rows(); ++f) {
+    out += 'f';
+    for (int c = 0; c < 3; ++c) {
+      out += ' ';
+      appendInteger(out, mesh.triangles(f, c) + 1LL);
+    }
+    out += '\n';
+  }
+  writeBytesAtomically(path, out);
+}
+
+}  // namespace tetblend::detail

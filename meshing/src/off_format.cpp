@@ -1,0 +1,107 @@
+// Geomview OFF: a header keyword (OFF, COFF, NOFF, CNOFF, STOFF, ...; the
+// counts may follow on the same line), "#V #F #E", #V vertex lines (extra
+// values such as colours or normals are ignored) and #F face lines
+// "k i0 .. ik-1 [colour]" with 0-based indices. Only k == 3 is accepted.
+
+#include <string>
+
+#include "formats.h"
+#include "text_parsing.h"
+
+namespace tetblend::detail {
+
+SurfaceMesh readOff(const std::string& path) {
+  const std::string text = readFileBytes(path);
+  TextLines lines(text);
+  if (!lines.next()) throwAtLine(path, 1, "empty file: expected an OFF header");
+  const std::string_view keyword = lines.tokens()[0];
+  const bool isOff = keyword.size() >= 3 && keyword.substr(keyword.size() - 3) == "OFF";
+  if (!isOff || keyword.find('4') != std::string_view::npos ||
+      (keyword.size() > 3 && keyword[keyword.size() - 4] == 'n')) {
+    throwAtLine(path, lines.lineNumber(),
+                "expected the header 'OFF' (3D), found '" + std::string(keyword) +
+                    "': only 3D OFF files are supported");
+  }
+  std::vector<std::string_view> counts(lines.tokens().begin() + 1, lines.tokens().end());
+  std::size_t countLine = lines.lineNumber();
+  if (counts.empty()) {
+    if (!lines.next()) throwAtLine(path, lines.lineNumber(), "missing the '#V #F #E' counts line");
+    counts = lines.tokens();
+    countLine = lines.lineNumber();
+  }
+  if (counts.size() < 2) {
+    throwAtLine(path, countLine,
+                "expected '#vertices #faces #edges', found " + std::to_string(counts.size()) +
+                    " value(s): fix the header");
+  }
+  const int vertexCount = parseCount(counts[0], path, countLine, "vertex count");
+  const int faceCount = parseCount(counts[1], path, countLine, "face count");
+
+  SurfaceMesh mesh;
+  mesh.vertices.resize(vertexCount, 3);
+  for (int v = 0; v < vertexCount; ++v) {
+    if (!lines.next()) {
+      throwAtLine(path, lines.lineNumber(),
+                  "file ends after " + std::to_string(v) + " of " + std::to_string(vertexCount) +
+                      " vertices: fix the header or the data");
+    }
+    mesh.vertices.row(v) = parseVertex(lines.tokens(), 0, path, lines.lineNumber(), v);
+  }
+  mesh.triangles.resize(faceCount, 3);
+  for (int f = 0; f < faceCount; ++f) {
+    if (!lines.next()) {
+      throwAtLine(path, lines.lineNumber(),
+                  "file ends after " + std::to_string(f) + " of " + std::to_string(faceCount) +
+                      " faces: fix the header or the data");
+    }
+    const auto& tokens = lines.tokens();
+    const std::string element = "face " + std::to_string(f) + " (0-based)";
+    const long long corners =
+        parseInteger(tokens[0], path, lines.lineNumber(), "vertex count of " + element);
+    if (corners != 3) {
+      throwAtLine(path, lines.lineNumber(),
+                  element + " has " + std::to_string(corners) +
+                      " vertices: " + (corners > 3 ? "triangulate it first" : "a face needs 3"));
+    }
+    if (tokens.size() < 4) {
+      throwAtLine(
+          path, lines.lineNumber(),
+          element + ": expected 3 vertex indices, found " + std::to_string(tokens.size() - 1));
+    }
+    for (int c = 0; c < 3; ++c) {
+      const long long index =
+          parseInteger(tokens[1 + c], path, lines.lineNumber(), "vertex index of " + element);
+      mesh.triangles(f, c) = checkedIndex(index, 0, vertexCount, path, lines.lineNumber(), element);
+    }
+  }
+  return mesh;
+}
+
+void writeOff(const std::string& path, const SurfaceMesh& mesh) {
+  checkMeshForWriting(mesh, path);
+  std::string out;
+  out.reserve(static_cast<std::size_t>(mesh.vertices.rows() * 64 + mesh.triangles.rows() * 32));
+  out += "OFF\n";
+  appendInteger(out, mesh.vertices.rows());
+  out += ' ';
+  appendInteger(out, mesh.triangles.rows());
+  out += " 0\n";
+  for (Eigen::Index v = 0; v < mesh.vertices.rows(); ++v) {
+    for (int c = 0; c < 3; ++c) {
+      if (c > 0) out += ' ';
+      appendDouble(out, mesh.vertices(v, c));
+    }
+    out += '\n';
+  }
+  for (Eigen::Index f = 0; f < mesh.triangles.rows(); ++f) {
+    out += '3';
+    for (int c = 0; c < 3; ++c) {
+      out += ' ';
+      appendInteger(out, mesh.triangles(f, c));
+    }
+    out += '\n';
+  }
+  writeBytesAtomically(path, out);
+}
+
+}  // namespace tetblend::detail

@@ -1,0 +1,222 @@
+#include "text_parsing.h"
+
+#include "formats.h"
+
+#include <algorithm>
+#include <cctype>
+#include <charconv>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <system_error>
+
+#include "tetblend/core/error.h"
+#include "tetblend/meshing/atomic_file.h"
+
+namespace tetblend::detail {
+
+std::string readFileBytes(const std::string& path) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) {
+    throw InputError(path + ": no such file; check the path");
+  }
+  std::ifstream in(path, std::ios::binary);
+  if (!in) {
+    throw InputError(path + ": cannot open the file for reading; check its permissions");
+  }
+  std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if (in.bad()) {
+    throw InputError(path + ": read error; check the file system");
+  }
+  return bytes;
+}
+
+void throwAtLine(const std::string& path, std::size_t line, const std::string& message) {
+  throw InputError(path + ":" + std::to_string(line) + ": " + message);
+}
+
+std::string lowerExtension(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return ext;
+}
+
+TextLines::TextLines(std::string_view text, char comment) : text_(text), comment_(comment) {}
+
+bool TextLines::next() {
+  while (position_ < text_.size()) {
+    const std::size_t end = std::min(text_.find('\n', position_), text_.size());
+    std::string_view line = text_.substr(position_, end - position_);
+    position_ = end + 1;
+    ++lineNumber_;
+    const std::size_t hash = line.find(comment_);
+    if (hash != std::string_view::npos) line = line.substr(0, hash);
+    tokens_.clear();
+    std::size_t i = 0;
+    while (i < line.size()) {
+      while (i < line.size() && std::isspace(static_cast<unsigned char>(line[i]))) ++i;
+      const std::size_t start = i;
+      while (i < line.size() && !std::isspace(static_cast<unsigned char>(line[i]))) ++i;
+      if (i > start) tokens_.push_back(line.substr(start, i - start));
+    }
+    if (!tokens_.empty()) return true;
+  }
+  position_ = text_.size();
+  return false;
+}
+
+bool TextTokens::next(std::string_view& token) {
+  while (!started_ || index_ >= lines_.tokens().size()) {
+    if (!lines_.next()) return false;
+    started_ = true;
+    index_ = 0;
+  }
+  token = lines_.tokens()[index_++];
+  return true;
+}
+
+double parseDouble(std::string_view token, const std::string& path, std::size_t line,
+                   const std::string& what) {
+  std::string_view digits = token;
+  if (!digits.empty() && digits.front() == '+') digits.remove_prefix(1);
+  double value = 0.0;
+  const auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
+  if (ec == std::errc::result_out_of_range) {
+    throwAtLine(
+        path, line,
+        what + " '" + std::string(token) + "' is out of the double range: rescale the data");
+  }
+  if (ec != std::errc() || end != digits.data() + digits.size() || digits.empty()) {
+    throwAtLine(
+        path, line,
+        "expected a number for " + what + ", found '" + std::string(token) + "': fix the file");
+  }
+  return value;
+}
+
+long long parseInteger(std::string_view token, const std::string& path, std::size_t line,
+                       const std::string& what) {
+  std::string_view digits = token;
+  if (!digits.empty() && digits.front() == '+') digits.remove_prefix(1);
+  long long value = 0;
+  const auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
+  if (ec != std::errc() || end != digits.data() + digits.size() || digits.empty()) {
+    throwAtLine(
+        path, line,
+        "expected an integer for " + what + ", found '" + std::string(token) + "': fix the file");
+  }
+  return value;
+}
+
+int parseCount(std::string_view token, const std::string& path, std::size_t line,
+               const std::string& what) {
+  const long long value = parseInteger(token, path, line, what);
+  if (value < 0 || value > 2147483647LL) {
+    throwAtLine(path, line,
+                what + " " + std::to_string(value) +
+                    " is not a valid count (0..2147483647): fix the header");
+  }
+  return static_cast<int>(value);
+}
+
+void checkFiniteVertex(const Eigen::RowVector3d& position, const std::string& path,
+                       const std::string& where, int vertex) {
+  for (int c = 0; c < 3; ++c) {
+    if (!std::isfinite(position[c])) {
+      const std::string kind = std::isnan(position[c]) ? "NaN" : "infinite";
+      throw InputError(path + ":" + where + ": " + kind + " coordinate at vertex " +
+                       std::to_string(vertex) + " (0-based): fix or remove the vertex");
+    }
+  }
+}
+
+Eigen::RowVector3d parseVertex(const std::vector<std::string_view>& tokens, std::size_t first,
+                               const std::string& path, std::size_t line, int vertex) {
+  if (tokens.size() < first + 3) {
+    throwAtLine(
+        path, line,
+        "expected 3 coordinates for vertex " + std::to_string(vertex) + " (0-based), found " +
+            std::to_string(tokens.size() > first ? tokens.size() - first : 0) + ": fix the line");
+  }
+  Eigen::RowVector3d p;
+  for (int c = 0; c < 3; ++c) {
+    p[c] = parseDouble(tokens[first + c], path, line,
+                       "coordinate of vertex " + std::to_string(vertex));
+  }
+  checkFiniteVertex(p, path, std::to_string(line), vertex);
+  return p;
+}
+
+int checkedIndex(long long value, long long base, int count, const std::string& path,
+                 std::size_t line, const std::string& element) {
+  if (value < base || value >= base + count) {
+    throwAtLine(path, line,
+                element + ": index " + std::to_string(value) + " out of range " +
+                    std::to_string(base) + ".." + std::to_string(base + count - 1) +
+                    ": it refers to a vertex that does not exist");
+  }
+  return static_cast<int>(value - base);
+}
+
+void appendDouble(std::string& out, double value) {
+  char buffer[32];
+  const auto result = std::to_chars(buffer, buffer + sizeof(buffer), value);
+  out.append(buffer, result.ptr);
+}
+
+void appendInteger(std::string& out, long long value) {
+  char buffer[24];
+  const auto result = std::to_chars(buffer, buffer + sizeof(buffer), value);
+  out.append(buffer, result.ptr);
+}
+
+void writeFileBytes(const std::string& tempPath, const std::string& bytes,
+                    const std::string& target) {
+  std::ofstream out(tempPath, std::ios::binary | std::ios::trunc);
+  if (!out) throw InputError(target + ": cannot open a file for writing; check permissions");
+  out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+  out.close();
+  if (!out) throw InputError(target + ": write failed (disk full?); check the file system");
+}
+
+void writeBytesAtomically(const std::string& path, const std::string& bytes) {
+  writeFileAtomically(path,
+                      [&](const std::string& tempPath) { writeFileBytes(tempPath, bytes, path); });
+}
+
+}  // namespace tetblend::detail
+
+namespace tetblend::detail {
+namespace {
+
+template <typename Elements>
+void checkForWriting(const Vertices& vertices, const Elements& elements, const std::string& path,
+                     const char* elementName) {
+  for (Eigen::Index v = 0; v < vertices.rows(); ++v) {
+    checkFiniteVertex(vertices.row(v), path, " cannot write", static_cast<int>(v));
+  }
+  for (Eigen::Index e = 0; e < elements.rows(); ++e) {
+    for (Eigen::Index c = 0; c < elements.cols(); ++c) {
+      const int index = elements(e, c);
+      if (index < 0 || index >= vertices.rows()) {
+        throw InputError(path + ": cannot write " + elementName + " " + std::to_string(e) +
+                         ": index " + std::to_string(index) + " out of range 0.." +
+                         std::to_string(vertices.rows() - 1) + "; fix the mesh");
+      }
+    }
+  }
+}
+
+}  // namespace
+
+void checkMeshForWriting(const SurfaceMesh& mesh, const std::string& path) {
+  checkForWriting(mesh.vertices, mesh.triangles, path, "triangle");
+}
+
+void checkMeshForWriting(const TetMesh& mesh, const std::string& path) {
+  checkForWriting(mesh.vertices, mesh.tets, path, "tet");
+}
+
+}  // namespace tetblend::detail
