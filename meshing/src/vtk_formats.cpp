@@ -9,11 +9,13 @@
 #include <set>
 #include <string>
 
+#include <vtkAlgorithm.h>
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
 #include <vtkCellTypes.h>
 #include <vtkCommand.h>
 #include <vtkDoubleArray.h>
+#include <vtkExecutive.h>
 #include <vtkIdList.h>
 #include <vtkIntArray.h>
 #include <vtkPointData.h>
@@ -39,18 +41,29 @@ class VtkMessages : public vtkCommand {
  public:
   static VtkMessages* New() { return new VtkMessages; }
   void Execute(vtkObject*, unsigned long, void* callData) override {
+    std::string message = callData != nullptr ? static_cast<const char*>(callData) : "unknown";
+    // VTK prefixes "ERROR: In <file>, line <n>\n<class> (<address>): ": keep the rest.
+    const std::size_t start = message.find("): ");
+    if (start != std::string::npos) message = message.substr(start + 3);
+    for (char& c : message) {
+      if (c == '\n' || c == '\r') c = ' ';
+    }
+    while (!message.empty() && message.back() == ' ') message.pop_back();
     if (!text.empty()) text += " / ";
-    text += callData != nullptr ? static_cast<const char*>(callData) : "unknown VTK error";
-    // VTK messages end with a newline; keep the InputError on one line.
-    while (!text.empty() && (text.back() == '\n' || text.back() == '\r')) text.pop_back();
+    text += message;
   }
   std::string text;
 };
 
-vtkSmartPointer<VtkMessages> observe(vtkObject* object) {
+// Routes the errors and warnings of `algorithm` and of its executive (which
+// reports failed pipeline requests) to one collector.
+vtkSmartPointer<VtkMessages> observe(vtkAlgorithm* algorithm) {
   auto messages = vtkSmartPointer<VtkMessages>::New();
-  object->AddObserver(vtkCommand::ErrorEvent, messages);
-  object->AddObserver(vtkCommand::WarningEvent, messages);
+  for (vtkObject* object :
+       {static_cast<vtkObject*>(algorithm), static_cast<vtkObject*>(algorithm->GetExecutive())}) {
+    object->AddObserver(vtkCommand::ErrorEvent, messages);
+    object->AddObserver(vtkCommand::WarningEvent, messages);
+  }
   return messages;
 }
 
@@ -62,6 +75,9 @@ vtkSmartPointer<Reader> runReader(const std::string& path, const char* kind) {
   }
   auto reader = vtkSmartPointer<Reader>::New();
   const auto messages = observe(reader);
+  // The reader's internal reader and XML parser report through these.
+  reader->SetReaderErrorObserver(messages);
+  reader->SetParserErrorObserver(messages);
   if (reader->CanReadFile(path.c_str()) == 0) {
     throw InputError(path + ": not a VTK XML " + kind + " file (or unreadable): check the file");
   }

@@ -1,0 +1,287 @@
+#include "tetblend/meshing/surface_io.h"
+
+#include <gtest/gtest.h>
+
+#include <vtkCellArray.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkSmartPointer.h>
+#include <vtkXMLPolyDataWriter.h>
+
+#include <string>
+#include <vector>
+
+#include "io_test_support.h"
+#include "tetblend/core/error.h"
+
+namespace tetblend {
+namespace {
+
+using io_test::TempDir;
+using io_test::writeText;
+
+// Every writer prints the shortest decimal that reads back to the same double
+// (std::to_chars) or stores raw float64, so round trips are bit-exact: the
+// tolerance is zero and positions are compared bitwise.
+
+std::string messageOf(const std::string& path) {
+  try {
+    readSurface(path);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "no InputError";
+}
+
+SurfaceMesh hardSurface() {
+  SurfaceMesh m;
+  m.vertices = io_test::hardVertices();
+  m.triangles.resize(4, 3);
+  m.triangles << 0, 1, 2, 2, 3, 4, 5, 4, 3, 0, 5, 1;
+  return m;
+}
+
+void expectSame(const SurfaceMesh& expected, const SurfaceMesh& actual) {
+  ASSERT_EQ(expected.vertices.rows(), actual.vertices.rows());
+  EXPECT_TRUE(io_test::sameBits(expected.vertices, actual.vertices));
+  EXPECT_EQ(expected.triangles, actual.triangles);
+}
+
+TEST(SurfaceIo, RoundTripIsBitExactInEveryWritableFormat) {
+  TempDir dir;
+  std::mt19937 rng(io_test::testSeed("SurfaceIo.RoundTripIsBitExactInEveryWritableFormat"));
+  const std::vector<SurfaceMesh> meshes = {hardSurface(), io_test::randomSurface(rng, 200, 500)};
+  for (const char* name : {"m.obj", "m.off", "m.ply", "ascii.ply", "m.vtp", "UPPER.OBJ"}) {
+    for (const SurfaceMesh& mesh : meshes) {
+      SCOPED_TRACE(name);
+      const std::string path = dir.file(name);
+      SurfaceWriteOptions options;
+      options.plyBinary = std::string(name) != "ascii.ply";
+      writeSurface(path, mesh, {}, options);
+      expectSame(mesh, readSurface(path));
+    }
+  }
+}
+
+TEST(SurfaceIo, ObjAcceptsTextureNormalAndRelativeIndices) {
+  TempDir dir;
+  const std::string path = dir.file("a.obj");
+  writeText(path,
+            "# comment\nmtllib x.mtl\no thing\nv 1 2 3 1.0\nv 4 5 6\r\nvt 0 0\nvn 0 0 1\n"
+            "g group\ns off\nv 7 8 9 0.5 0.5 0.5\nusemtl m\nf 1/1/1 2/1/1 3/1/1\n"
+            "v -1 -2 -3\nf -1 -2//1 -4/1\n");
+  const SurfaceMesh m = readSurface(path);
+  Vertices expected(4, 3);
+  expected << 1, 2, 3, 4, 5, 6, 7, 8, 9, -1, -2, -3;
+  EXPECT_TRUE(io_test::sameBits(expected, m.vertices));
+  Triangles triangles(2, 3);
+  triangles << 0, 1, 2, 3, 2, 0;
+  EXPECT_EQ(triangles, m.triangles);
+}
+
+TEST(SurfaceIo, OffAcceptsColoursCommentsAndCountsOnTheHeaderLine) {
+  TempDir dir;
+  const std::string path = dir.file("a.off");
+  writeText(path,
+            "COFF 4 2 0\n# comment\n0 0 0 255 0 0 255\n1 0 0 1 1 1 1\n0 1 0 0 0 0 0\n"
+            "0 0 1 9 9 9 9\n\n3 0 2 1 255 0 0\n3 0 1 3\n");
+  const SurfaceMesh m = readSurface(path);
+  Vertices expected(4, 3);
+  expected << 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1;
+  EXPECT_TRUE(io_test::sameBits(expected, m.vertices));
+  Triangles triangles(2, 3);
+  triangles << 0, 2, 1, 0, 1, 3;
+  EXPECT_EQ(triangles, m.triangles);
+}
+
+// A PLY file built byte by byte: float x y z plus a uchar colour, faces as
+// "list uchar uint", an extra element after the faces.
+std::string binaryPly(bool little) {
+  io_test::ByteBuilder b(little);
+  b.text(std::string("ply\nformat ") + (little ? "binary_little_endian" : "binary_big_endian") +
+         " 1.0\ncomment test\nelement vertex 3\nproperty float x\nproperty uchar red\n"
+         "property float y\nproperty float z\nelement face 1\n"
+         "property list uchar uint vertex_indices\nproperty short flags\n"
+         "element edge 1\nproperty list uchar int pair\nend_header\n");
+  const float xyz[3][3] = {{0.5f, -1.25f, 3.0f}, {1e-3f, 2.0f, -0.0f}, {7.0f, 8.0f, 9.5f}};
+  for (const auto& p : xyz) b.put(p[0]).put(std::uint8_t{200}).put(p[1]).put(p[2]);
+  b.put(std::uint8_t{3}).put(std::uint32_t{2}).put(std::uint32_t{0}).put(std::uint32_t{1});
+  b.put(std::int16_t{-5});
+  b.put(std::uint8_t{2}).put(std::int32_t{0}).put(std::int32_t{1});
+  return b.bytes();
+}
+
+TEST(SurfaceIo, PlyBinaryBothByteOrdersWithExtraPropertiesAndElements) {
+  TempDir dir;
+  Vertices expected(3, 3);
+  expected << 0.5, -1.25, 3.0, static_cast<double>(1e-3f), 2.0, -0.0, 7.0, 8.0, 9.5;
+  Triangles triangles(1, 3);
+  triangles << 2, 0, 1;
+  for (const bool little : {true, false}) {
+    SCOPED_TRACE(little ? "little endian" : "big endian");
+    const std::string path = dir.file(little ? "le.ply" : "be.ply");
+    writeText(path, binaryPly(little));
+    const SurfaceMesh m = readSurface(path);
+    EXPECT_TRUE(io_test::sameBits(expected, m.vertices));
+    EXPECT_EQ(triangles, m.triangles);
+  }
+}
+
+TEST(SurfaceIo, StlMergesCoincidentCornersInFirstAppearanceOrder) {
+  TempDir dir;
+  // Two triangles sharing the edge (1,0,0)-(0,1,0); the second lists -0 for a
+  // coordinate the first gave as +0: exactly coincident, so merged.
+  const std::string ascii =
+      "solid s\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\n"
+      "endloop\nendfacet\nfacet normal 0 0 1\n  outer loop\n  vertex 1 -0 0\n  vertex 1 1 0\n"
+      "  vertex 0 1 0\n  endloop\nendfacet\nendsolid s\n";
+  io_test::ByteBuilder binary(true);
+  binary.text("solid but binary" + std::string(64, ' ')).put(std::uint32_t{2});
+  const float corners[6][3] = {{0, 0, 0},     {1, 0, 0}, {0, 1, 0},
+                               {1, -0.0f, 0}, {1, 1, 0}, {0, 1, 0}};
+  for (int f = 0; f < 2; ++f) {
+    binary.put(0.0f).put(0.0f).put(1.0f);
+    for (int c = 0; c < 3; ++c) {
+      for (int k = 0; k < 3; ++k) binary.put(corners[3 * f + c][k]);
+    }
+    binary.put(std::uint16_t{0});
+  }
+  Vertices expected(4, 3);
+  expected << 0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0;
+  Triangles triangles(2, 3);
+  triangles << 0, 1, 2, 1, 3, 2;
+  for (const auto& [name, bytes] :
+       {std::pair<std::string, std::string>{"a.stl", ascii}, {"b.stl", binary.bytes()}}) {
+    SCOPED_TRACE(name);
+    writeText(dir.file(name), bytes);
+    const SurfaceMesh m = readSurface(dir.file(name));
+    EXPECT_TRUE(io_test::sameBits(expected, m.vertices));
+    EXPECT_EQ(triangles, m.triangles);
+  }
+}
+
+struct Malformed {
+  const char* file;
+  const char* content;
+  const char* expected;  // substring of the message, with the line number
+};
+
+TEST(SurfaceIo, MalformedFilesThrowInputErrorNamingLineAndValue) {
+  const std::vector<Malformed> cases = {
+      {"a.obj", "v 1 2\n", "a.obj:1: expected 3 coordinates for vertex 0"},
+      {"a.obj", "v 1 2 x\n", "a.obj:1: expected a number for coordinate of vertex 0, found 'x'"},
+      {"a.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\n\nv nan 0 0\n", "a.obj:5: NaN coordinate at vertex 3"},
+      {"a.obj", "v 0 0 inf\n", "a.obj:1: infinite coordinate at vertex 0"},
+      {"a.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nf 1 2 3 4\n",
+       "a.obj:5: face 0 (0-based) has 4 vertices: triangulate it first"},
+      {"a.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 99\n",
+       "a.obj:4: face 0 (0-based): index 99 out of range 1..3"},
+      {"a.obj", "v 0 0 0\nf 1 -2 1\n", "a.obj:2: face 0 (0-based): relative index -2"},
+      {"a.obj", "v 0 0 0\nf 1 a 1\n", "a.obj:2: expected an integer"},
+      {"a.off", "OFX\n", "a.off:1: expected the header 'OFF'"},
+      {"a.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n", "a.off:4: file ends after 2 of 3 vertices"},
+      {"a.off", "OFF\n4 1 0\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n4 0 1 2 3\n",
+       "a.off:7: face 0 (0-based) has 4 vertices: triangulate it first"},
+      {"a.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n",
+       "a.off:6: face 0 (0-based): index 7 out of range 0..2"},
+      {"a.off", "OFF\n1 0 0\n0 -nan 0\n", "a.off:3: NaN coordinate at vertex 0"},
+      {"a.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\n",
+       "a.ply:4: the header has no 'end_header' line"},
+      {"a.ply",
+       "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\nproperty "
+       "float z\n"
+       "element face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n"
+       "1 1 0\n4 0 1 2 3\n",
+       "a.ply:14: face 0 (0-based) has 4 vertices: triangulate it first"},
+      {"a.ply",
+       "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty "
+       "float z\n"
+       "element face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n"
+       "3 0 1 50\n",
+       "a.ply:13: face 0 (0-based): index 50 out of range 0..2"},
+      {"a.ply",
+       "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\nproperty "
+       "float z\n"
+       "end_header\n0 inf 0\n",
+       "a.ply:8: infinite coordinate at vertex 0"},
+      {"a.ply",
+       "ply\nformat binary_little_endian 1.0\nelement vertex 2\nproperty double x\n"
+       "property double y\nproperty double z\nend_header\n\x01\x02\x03",
+       "a.ply: byte offset 118: file ends inside property 'x' of vertex 0"},
+      {"a.stl", "solid s\nfacet normal 0 0 1\nouter loop\nvertex 0 0\n",
+       "a.stl:4: expected 3 coordinates after 'vertex', found 2"},
+      {"a.stl",
+       "solid s\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\n"
+       "vertex 1 1 0\nendloop\nendfacet\nendsolid\n",
+       "a.stl:7: facet 0 (0-based) has more than 3 vertices: triangulate it first"},
+      {"a.stl", "solid s\nfacet normal 0 0 1\nouter loop\nvertex 0 nan 0\n",
+       "a.stl:4: NaN coordinate at vertex 0"},
+      {"a.stl", "garbage", "a.stl:1: neither ascii STL"},
+      {"a.vtp", "<VTKFile type=\"PolyData\"> broken", "a.vtp: VTK could not read the file"},
+      {"a.vtp", "solid s\n", "a.vtp: not a VTK XML PolyData file"},
+  };
+  TempDir dir;
+  for (const Malformed& c : cases) {
+    SCOPED_TRACE(c.content);
+    writeText(dir.file(c.file), c.content);
+    const std::string message = messageOf(dir.file(c.file));
+    EXPECT_NE(message.find(c.expected), std::string::npos) << message;
+  }
+}
+
+TEST(SurfaceIo, VtpWithPolygonsOrStripsIsRefused) {
+  TempDir dir;
+  auto points = vtkSmartPointer<vtkPoints>::New();
+  for (int i = 0; i < 4; ++i) points->InsertNextPoint(i & 1, i >> 1, 0);
+  auto quads = vtkSmartPointer<vtkCellArray>::New();
+  const vtkIdType quad[4] = {0, 1, 3, 2};
+  quads->InsertNextCell(4, quad);
+  auto poly = vtkSmartPointer<vtkPolyData>::New();
+  poly->SetPoints(points);
+  poly->SetPolys(quads);
+  auto writer = vtkSmartPointer<vtkXMLPolyDataWriter>::New();
+  writer->SetInputData(poly);
+  writer->SetFileName(dir.file("quad.vtp").c_str());
+  ASSERT_EQ(writer->Write(), 1);
+  EXPECT_NE(messageOf(dir.file("quad.vtp")).find("polygon 0 (0-based) has 4 vertices: triangulate"),
+            std::string::npos);
+
+  poly->SetPolys(vtkSmartPointer<vtkCellArray>::New());
+  poly->SetStrips(quads);
+  writer->SetFileName(dir.file("strip.vtp").c_str());
+  ASSERT_EQ(writer->Write(), 1);
+  EXPECT_NE(messageOf(dir.file("strip.vtp")).find("strip cells"), std::string::npos);
+}
+
+TEST(SurfaceIo, MissingFileAndUnknownExtensionThrow) {
+  TempDir dir;
+  for (const char* name : {"missing.obj", "missing.ply", "missing.stl", "missing.vtp"}) {
+    EXPECT_NE(messageOf(dir.file(name)).find("no such file"), std::string::npos) << name;
+  }
+  writeText(dir.file("a.xyz"), "1 2 3\n");
+  EXPECT_NE(messageOf(dir.file("a.xyz")).find("unknown surface extension '.xyz'"),
+            std::string::npos);
+}
+
+TEST(SurfaceIo, WriterRefusesBadMeshesAndKeepsTheOldFile) {
+  TempDir dir;
+  const std::string path = dir.file("keep.obj");
+  writeText(path, "old content\n");
+  SurfaceMesh bad = hardSurface();
+  bad.triangles(2, 1) = 6;  // one past the last vertex
+  for (const char* name : {"keep.obj", "keep.off", "keep.ply", "keep.vtp"}) {
+    EXPECT_THROW(writeSurface(dir.file(name), bad), InputError) << name;
+  }
+  SurfaceMesh nan = hardSurface();
+  nan.vertices(1, 2) = std::nan("");
+  EXPECT_THROW(writeSurface(path, nan), InputError);
+  MeshDataArrays data;
+  data.pointData.push_back({"a", 1, std::vector<double>(6, 0.0)});
+  EXPECT_THROW(writeSurface(path, hardSurface(), data), InputError);  // OBJ has no arrays
+  EXPECT_THROW(writeSurface(dir.file("a.stl"), hardSurface()), InputError);
+  EXPECT_EQ(io_test::readText(path), "old content\n");
+  EXPECT_EQ(dir.entryCount(), 1);  // no partial or temporary file left
+}
+
+}  // namespace
+}  // namespace tetblend
