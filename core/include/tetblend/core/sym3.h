@@ -13,8 +13,11 @@ namespace tetblend {
 
 /// Eigenvalues of a symmetric 3x3 matrix Y in descending order, by the
 /// trigonometric cubic formula (Kaji–Ochiai §4.1). Absolute error a few ulps
-/// of the spectral radius. Y must be symmetric (only its upper triangle and
-/// diagonal are read).
+/// of the spectral radius for well-separated eigenvalues; a (near-)double
+/// eigenvalue is split with an error of order sqrt(eps) times the radius (the
+/// pair's mean stays accurate). symExp/symLog are insensitive to that split:
+/// their interpolation error is second order in it. Y must be symmetric (only its upper triangle
+/// and diagonal are read).
 Eigen::Vector3d symEigenvalues(const Eigen::Matrix3d& y);
 
 /// Matrix exponential of a symmetric 3x3 Y (dimensionless), Kaji–Ochiai eq.

@@ -1,0 +1,184 @@
+#include "tetblend/core/sym3.h"
+
+#include <gtest/gtest.h>
+
+#include <Eigen/Eigenvalues>
+#include <unsupported/Eigen/MatrixFunctions>
+
+#include <vector>
+
+#include "core_test_support.h"
+#include "tetblend/core/error.h"
+
+namespace tetblend {
+namespace {
+
+using core_test::randomRotation;
+using core_test::relativeError;
+using core_test::spdWithEigenvalues;
+using core_test::testSeed;
+using core_test::uniform;
+
+// exp/log of unit-scale symmetric matrices: a few ulps per unit of eigenvalue
+// spread (the Cayley–Hamilton quadratic grows like the spread).
+constexpr double kTolPerSpread = 4e-15;
+// Eigenvalues by the cubic formula, absolute, relative to the spectral radius:
+// a few ulps when distinct; a (near-)double root is split with an error of
+// order sqrt(eps) (acos near +-1), which exp/log do not feel (second order).
+constexpr double kEigenvalueTol = 1e-14;
+constexpr double kDoubleEigenvalueTol = 1e-7;
+
+/// V diag(f(mu)) V^T from the construction: an oracle independent of the code.
+struct SymCase {
+  Eigen::Matrix3d v;
+  Eigen::Vector3d mu;
+  Eigen::Matrix3d matrix() const { return v * mu.asDiagonal() * v.transpose(); }
+  Eigen::Matrix3d exp() const { return v * mu.array().exp().matrix().asDiagonal() * v.transpose(); }
+  Eigen::Matrix3d log() const { return v * mu.array().log().matrix().asDiagonal() * v.transpose(); }
+};
+
+/// Fixed hard spectra of Y (for exp) / log S (for log): zero, all equal,
+/// coincident pairs, near-coincident on both sides of the series switches,
+/// moderately and widely spread.
+std::vector<Eigen::Vector3d> hardLogSpectra() {
+  const double se = sym3_detail::kExpSeriesSpread;
+  return {Eigen::Vector3d(0, 0, 0),
+          Eigen::Vector3d(0.7, 0.7, 0.7),
+          Eigen::Vector3d(1, 1, -2),
+          Eigen::Vector3d(2, -1, -1),
+          Eigen::Vector3d(1e-9, 0, -1e-9),
+          Eigen::Vector3d(0.99 * se, 0.3 * se, 0),
+          Eigen::Vector3d(1.01 * se, 0.3 * se, 0),
+          Eigen::Vector3d(0.5, 0.5 + 1e-7, -0.2),
+          Eigen::Vector3d(3, -1, 0.5),
+          Eigen::Vector3d(9.2, 0, -9.2),
+          Eigen::Vector3d(-18.4, 0, 0)};
+}
+
+double spread(const Eigen::Vector3d& v) { return v.maxCoeff() - v.minCoeff(); }
+
+TEST(Sym3, EigenvaluesMatchEigenSolver) {
+  std::mt19937 rng(testSeed("Sym3.EigenvaluesMatchEigenSolver"));
+  for (int i = 0; i < 500; ++i) {
+    Eigen::Vector3d mu(uniform(rng, -3, 3), uniform(rng, -3, 3), uniform(rng, -3, 3));
+    if (i % 3 == 0) mu(1) = mu(0);  // coincident pair
+    if (i % 3 != 0 && (std::abs(mu(0) - mu(1)) < 0.1 || std::abs(mu(1) - mu(2)) < 0.1 ||
+                       std::abs(mu(0) - mu(2)) < 0.1)) {
+      continue;  // near-coincident pairs are covered by the i % 3 == 0 cases
+    }
+    const Eigen::Matrix3d y = spdWithEigenvalues(rng, mu);
+    const Eigen::Vector3d oracle =
+        Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(y, Eigen::EigenvaluesOnly)
+            .eigenvalues()
+            .reverse();
+    const Eigen::Vector3d lambda = symEigenvalues(y);
+    const double tol = i % 3 == 0 ? kDoubleEigenvalueTol : kEigenvalueTol;
+    ASSERT_LE((lambda - oracle).cwiseAbs().maxCoeff(), tol * (1 + y.norm())) << mu.transpose();
+    ASSERT_NEAR(lambda.sum(), y.trace(), kEigenvalueTol * (1 + y.norm()));
+  }
+  EXPECT_EQ(symEigenvalues(2.0 * Eigen::Matrix3d::Identity()), Eigen::Vector3d(2, 2, 2));
+}
+
+TEST(Sym3, ExpMatchesOraclesOnHardSpectra) {
+  std::mt19937 rng(testSeed("Sym3.ExpMatchesOraclesOnHardSpectra"));
+  for (const Eigen::Vector3d& mu : hardLogSpectra()) {
+    const SymCase c{randomRotation(rng), mu};
+    const Eigen::Matrix3d y = 0.5 * (c.matrix() + c.matrix().transpose());
+    SCOPED_TRACE(testing::Message() << "eigenvalues " << mu.transpose());
+    const double tol = kTolPerSpread * (1.0 + spread(mu));
+    EXPECT_LE(relativeError(symExp(y), c.exp()), tol);
+    EXPECT_LE(relativeError(symExp(y), y.exp()), tol);
+  }
+}
+
+TEST(Sym3, ExpSeriesSwitchIsSeamless) {
+  // Eigenvalue spread just below and just above kExpSeriesSpread, with the
+  // spread along several directions: both branches agree with the oracle.
+  std::mt19937 rng(testSeed("Sym3.ExpSeriesSwitchIsSeamless"));
+  for (double factor : {0.999, 1.001, 0.5, 2.0}) {
+    for (int i = 0; i < 50; ++i) {
+      const double h = factor * sym3_detail::kExpSeriesSpread;
+      const double t = uniform(rng, 0.0, 1.0);
+      const Eigen::Vector3d mu(h * t, 0.0, -h * (1 - t));
+      const SymCase c{randomRotation(rng), mu + Eigen::Vector3d::Constant(uniform(rng, -2, 2))};
+      const Eigen::Matrix3d y = c.matrix();
+      ASSERT_LE(relativeError(symExp(0.5 * (y + y.transpose())), c.exp()), kTolPerSpread);
+    }
+  }
+}
+
+TEST(Sym3, LogMatchesOraclesOnHardSpectra) {
+  std::mt19937 rng(testSeed("Sym3.LogMatchesOraclesOnHardSpectra"));
+  for (const Eigen::Vector3d& logMu : hardLogSpectra()) {
+    const SymCase c{randomRotation(rng), logMu.array().exp()};
+    const Eigen::Matrix3d s = 0.5 * (c.matrix() + c.matrix().transpose());
+    SCOPED_TRACE(testing::Message() << "log eigenvalues " << logMu.transpose());
+    // Log is well-conditioned in absolute terms relative to 1 + |log S|, with
+    // a condition of order cond(S) for the construction round-off of S.
+    const double cond = std::exp(spread(logMu));
+    const double tol = kTolPerSpread * (1.0 + spread(logMu)) * cond;
+    const Eigen::Matrix3d log = symLog(s);
+    EXPECT_LE((log - c.log()).norm() / (1.0 + c.log().norm()), tol);
+    EXPECT_LE(relativeError(symExp(log), s), kTolPerSpread * (1.0 + spread(logMu)));
+  }
+}
+
+TEST(Sym3, LogSwitchesAreSeamless) {
+  // Both sides of kLogSeriesSpread (relative spread) and of
+  // kLogClosedFormMaxCond (closed form vs eigen-decomposition).
+  std::mt19937 rng(testSeed("Sym3.LogSwitchesAreSeamless"));
+  const double hs = sym3_detail::kLogSeriesSpread;
+  const double hc = std::log(sym3_detail::kLogClosedFormMaxCond);
+  for (double h : {0.999 * hs, 1.001 * hs, 0.999 * hc, 1.001 * hc}) {
+    for (int i = 0; i < 50; ++i) {
+      const double t = uniform(rng, 0.0, 1.0);
+      const double scale = uniform(rng, -5, 5);
+      const Eigen::Vector3d logMu = Eigen::Vector3d(h * t, 0.0, -h * (1 - t)).array() + scale;
+      const SymCase c{randomRotation(rng), logMu.array().exp()};
+      const Eigen::Matrix3d s = 0.5 * (c.matrix() + c.matrix().transpose());
+      const Eigen::Matrix3d log = symLog(s);
+      ASSERT_LE((log - c.log()).norm() / (1.0 + c.log().norm()), 2e-14 * (1.0 + h) * std::exp(h))
+          << "spread " << h;
+      ASSERT_LE(relativeError(symExp(log), s), kTolPerSpread * (1.0 + h)) << "spread " << h;
+    }
+  }
+}
+
+TEST(Sym3, RandomSamplesAgainstMatrixFunctions) {
+  std::mt19937 rng(testSeed("Sym3.RandomSamplesAgainstMatrixFunctions"));
+  for (int i = 0; i < 500; ++i) {
+    Eigen::Matrix3d y;
+    for (int r = 0; r < 3; ++r)
+      for (int c = r; c < 3; ++c) y(r, c) = y(c, r) = uniform(rng, -2, 2);
+    const Eigen::Matrix3d e = symExp(y);
+    const double h = spread(symEigenvalues(y));
+    ASSERT_LE(relativeError(e, y.exp()), kTolPerSpread * (1 + h)) << y;
+    ASSERT_LE((symLog(e) - y).norm() / (1 + y.norm()), kTolPerSpread * (1 + h) * std::exp(h)) << y;
+  }
+}
+
+TEST(Sym3, ExpOfLogForConditionUpTo1e8) {
+  // Exp(log S) = S, errors relative to |S|, for widely spread stretches.
+  std::mt19937 rng(testSeed("Sym3.ExpOfLogForConditionUpTo1e8"));
+  constexpr double kWideTol = 1e-13;  // ~450 eps: the spread log(1e8) ~ 18
+  for (double cond : {1e2, 1e4, 1e6, 1e8, 1e10}) {
+    for (int i = 0; i < 50; ++i) {
+      const double mid = std::exp(uniform(rng, -std::log(cond), 0.0));
+      const Eigen::Matrix3d s = spdWithEigenvalues(rng, Eigen::Vector3d(1.0, mid, 1.0 / cond));
+      const Eigen::Matrix3d log = symLog(s);
+      ASSERT_TRUE(log.allFinite());
+      ASSERT_LE(relativeError(symExp(log), s), kWideTol) << "cond " << cond;
+    }
+  }
+}
+
+TEST(Sym3, LogRejectsNonPositiveDefinite) {
+  EXPECT_THROW(symLog(Eigen::Vector3d(1, 2, -1).asDiagonal().toDenseMatrix()), DomainError);
+  EXPECT_THROW(symLog(Eigen::Vector3d(1, 0, 1).asDiagonal().toDenseMatrix()), DomainError);
+  Eigen::Matrix3d nan = Eigen::Matrix3d::Identity();
+  nan(1, 2) = nan(2, 1) = std::nan("");
+  EXPECT_THROW(symLog(nan), DomainError);
+}
+
+}  // namespace
+}  // namespace tetblend
