@@ -52,8 +52,8 @@ Eigen::Matrix4d se3Exp(const Vector6d& xi);
 /// (omega, v) with |omega| in [0, pi], omega = so3Log(R) (Eberly eq. 11 and
 /// the theta = pi branch of §4.3), v = V^{-1} T (eq. 20). At exactly theta = pi
 /// the sign of omega is not unique; one of the two is returned. Throws
-/// DomainError if the last row is not (0 0 0 1) (within 1e-12) or R is not a
-/// rotation (as so3Log reports it).
+/// DomainError if the last row is not (0 0 0 1) or R is not a rotation
+/// (|R^T R - I| or |det R - 1| above 1e-9).
 Vector6d se3Log(const Eigen::Matrix4d& rigid);
 
 /// Inverse [R^T -R^T T; 0 1] of a rigid motion (Eberly eq. 18). No check.
