@@ -1,0 +1,114 @@
+#pragma once
+// Small closed surfaces with known volumes for the meshing tests, built by
+// hand (not by the code under test).
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <iostream>
+#include <map>
+#include <random>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "tetblend/core/mesh_types.h"
+
+namespace tetblend {
+namespace testing_surfaces {
+
+/// Axis-aligned cube [lo, lo + size]^3, 8 vertices, 12 triangles, outward and
+/// counter-clockwise (each face normal checked by hand: -z, +z, -y, +y, -x, +x).
+inline SurfaceMesh cube(const Eigen::Vector3d& lo = Eigen::Vector3d::Zero(), double size = 1.0) {
+  SurfaceMesh m;
+  m.vertices.resize(8, 3);
+  m.vertices << 0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 0, 0, 1, 1, 0, 1, 1, 1, 1, 0, 1, 1;
+  m.vertices *= size;
+  m.vertices.rowwise() += lo.transpose();
+  m.triangles.resize(12, 3);
+  m.triangles << 0, 2, 1, 0, 3, 2,  // z = lo (-z)
+      4, 5, 6, 4, 6, 7,             // z = hi (+z)
+      0, 1, 5, 0, 5, 4,             // y = lo (-y)
+      3, 7, 6, 3, 6, 2,             // y = hi (+y)
+      0, 4, 7, 0, 7, 3,             // x = lo (-x)
+      1, 2, 6, 1, 6, 5;             // x = hi (+x)
+  return m;
+}
+
+/// Concatenation of two surfaces (b's indices shifted).
+inline SurfaceMesh join(const SurfaceMesh& a, const SurfaceMesh& b) {
+  SurfaceMesh m;
+  m.vertices.resize(a.vertices.rows() + b.vertices.rows(), 3);
+  m.vertices << a.vertices, b.vertices;
+  m.triangles.resize(a.triangles.rows() + b.triangles.rows(), 3);
+  m.triangles << a.triangles, (b.triangles.array() + static_cast<int>(a.vertices.rows())).matrix();
+  return m;
+}
+
+/// Every face reversed.
+inline SurfaceMesh reversed(SurfaceMesh m) {
+  for (Eigen::Index f = 0; f < m.triangles.rows(); ++f)
+    std::swap(m.triangles(f, 1), m.triangles(f, 2));
+  return m;
+}
+
+/// Icosahedron subdivided once (42 vertices, 80 faces) on the unit sphere.
+inline SurfaceMesh icosphere() {
+  const double t = (1.0 + std::sqrt(5.0)) / 2.0;
+  std::vector<Eigen::Vector3d> v = {{-1, t, 0}, {1, t, 0}, {-1, -t, 0}, {1, -t, 0},
+                                    {0, -1, t}, {0, 1, t}, {0, -1, -t}, {0, 1, -t},
+                                    {t, 0, -1}, {t, 0, 1}, {-t, 0, -1}, {-t, 0, 1}};
+  std::vector<std::array<int, 3>> f = {{0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11},
+                                       {1, 5, 9},  {5, 11, 4}, {11, 10, 2}, {10, 7, 6}, {7, 1, 8},
+                                       {3, 9, 4},  {3, 4, 2},  {3, 2, 6},   {3, 6, 8},  {3, 8, 9},
+                                       {4, 9, 5},  {2, 4, 11}, {6, 2, 10},  {8, 6, 7},  {9, 8, 1}};
+  std::map<std::pair<int, int>, int> midpoint;
+  auto mid = [&](int a, int b) {
+    const auto key = std::minmax(a, b);
+    auto it = midpoint.find(key);
+    if (it != midpoint.end()) return it->second;
+    v.push_back((v[a] + v[b]) / 2.0);
+    return midpoint[key] = static_cast<int>(v.size()) - 1;
+  };
+  std::vector<std::array<int, 3>> fine;
+  for (const auto& tri : f) {
+    const int ab = mid(tri[0], tri[1]), bc = mid(tri[1], tri[2]), ca = mid(tri[2], tri[0]);
+    fine.push_back({tri[0], ab, ca});
+    fine.push_back({tri[1], bc, ab});
+    fine.push_back({tri[2], ca, bc});
+    fine.push_back({ab, bc, ca});
+  }
+  SurfaceMesh m;
+  m.vertices.resize(static_cast<Eigen::Index>(v.size()), 3);
+  for (std::size_t i = 0; i < v.size(); ++i) m.vertices.row(i) = v[i].normalized().transpose();
+  m.triangles.resize(static_cast<Eigen::Index>(fine.size()), 3);
+  for (std::size_t i = 0; i < fine.size(); ++i) {
+    m.triangles.row(i) << fine[i][0], fine[i][1], fine[i][2];
+  }
+  return m;
+}
+
+/// The icosphere with each vertex's radius drawn from [0.6, 1.4]: star-shaped
+/// about the origin, hence embedded (no self-intersection) and closed.
+inline SurfaceMesh randomStarShape(std::mt19937_64& rng) {
+  SurfaceMesh m = icosphere();
+  std::uniform_real_distribution<double> radius(0.6, 1.4);
+  for (Eigen::Index i = 0; i < m.vertices.rows(); ++i) m.vertices.row(i) *= radius(rng);
+  return m;
+}
+
+/// Seed of the randomised tests: TETBLEND_SEED if set, else a fixed default.
+/// Printed so that a failure can be reproduced.
+inline std::uint64_t testSeed() {
+  const char* env = std::getenv("TETBLEND_SEED");
+  const std::uint64_t seed = env != nullptr ? std::strtoull(env, nullptr, 10) : 20240521u;
+  std::cout << "[ seed     ] TETBLEND_SEED=" << seed << "\n";
+  return seed;
+}
+
+}  // namespace testing_surfaces
+}  // namespace tetblend
