@@ -10,7 +10,7 @@ using blend_detail::restWeight;
 
 // (1 - sum w) I + sum_k w_k F_kj: linear blending of deformation gradients.
 class LinearBlender final : public TetMapBlender {
-public:
+ public:
   explicit LinearBlender(const BlendInput& input) {
     const auto sizes = blend_detail::checkInput(input);
     tets_ = sizes.tets;
@@ -33,7 +33,7 @@ public:
     });
   }
 
-private:
+ private:
   size_t index(int tet, int example) const {
     return static_cast<size_t>(tet) * examples_ + example;
   }

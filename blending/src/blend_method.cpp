@@ -5,6 +5,7 @@
 
 #include "blend_common.h"
 #include "tetblend/blending/baseline_blend.h"
+#include "tetblend/blending/kaji_blend.h"
 #include "tetblend/core/error.h"
 
 namespace tetblend {
@@ -55,8 +56,7 @@ BlendMethod blendMethodFromName(const std::string& name) {
 }
 
 bool usesRotationLogs(BlendMethod method) {
-  return method == BlendMethod::kKaji || method == BlendMethod::kKajiFrechet ||
-         method == BlendMethod::kLieBodies;
+  return method == BlendMethod::kKaji || method == BlendMethod::kLieBodies;
 }
 
 void checkWeights(const std::vector<double>& weights, int exampleCount) {
@@ -81,6 +81,9 @@ std::unique_ptr<TetMapBlender> prepareTetMapBlender(BlendMethod method, const Bl
     case BlendMethod::kAlexa:
     case BlendMethod::kPolarSlerp:
       return prepareBaselineBlender(method, input);
+    case BlendMethod::kKaji:
+    case BlendMethod::kKajiFrechet:
+      return prepareKajiBlender(method, input);
     case BlendMethod::kVertexLinear:
       throw InputError("vertex-linear blends vertex positions and has no per-tet maps");
     default:

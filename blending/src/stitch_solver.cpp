@@ -163,9 +163,7 @@ StitchSolver& StitchSolver::operator=(StitchSolver&&) noexcept = default;
 
 int StitchSolver::vertexCount() const { return static_cast<int>(impl_->component.size()); }
 int StitchSolver::tetCount() const { return static_cast<int>(impl_->tets.rows()); }
-int StitchSolver::componentCount() const {
-  return static_cast<int>(impl_->componentSize.size());
-}
+int StitchSolver::componentCount() const { return static_cast<int>(impl_->componentSize.size()); }
 const std::vector<int>& StitchSolver::vertexComponent() const { return impl_->component; }
 const RestTetData& StitchSolver::restData() const { return impl_->rest; }
 StitchBackend StitchSolver::backend() const { return impl_->backend; }
@@ -230,7 +228,8 @@ void StitchSolver::solveInto(const std::vector<Eigen::Matrix3d>& targets,
   m.reducedSolution = m.ldlt.solve(m.rhs);
 #endif
   result.setZero(vertexCount(), 3);
-  for (Eigen::Index r = 0; r < freeCount; ++r) result.row(m.freeVertices[r]) = m.reducedSolution.row(r);
+  for (Eigen::Index r = 0; r < freeCount; ++r)
+    result.row(m.freeVertices[r]) = m.reducedSolution.row(r);
   const Centroids shift = centroids - componentCentroids(result);
   for (int v = 0; v < vertexCount(); ++v) result.row(v) += shift.row(m.component[v]);
   if (timings != nullptr) timings->solveSeconds = secondsSince(start);

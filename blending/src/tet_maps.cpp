@@ -19,8 +19,8 @@ RestTetData restTetData(const TetMesh& rest) {
       const int v = rest.tets(j, c);
       if (v < 0 || v >= vertexCount) {
         std::ostringstream message;
-        message << "rest tet " << j << " refers to vertex " << v << ", outside [0, "
-                << vertexCount << "): fix the tet indices";
+        message << "rest tet " << j << " refers to vertex " << v << ", outside [0, " << vertexCount
+                << "): fix the tet indices";
         throw InputError(message.str());
       }
     }

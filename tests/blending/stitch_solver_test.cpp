@@ -95,8 +95,8 @@ TEST_P(StitchBackends, SolutionIsTheLeastSquaresMinimiser) {
   // and a first-order term would show as an asymmetry between +h and -h.
   constexpr double kStep = 1e-3;
   for (int trial = 0; trial < 10; ++trial) {
-    const Vertices direction = Vertices::NullaryExpr(rest.vertices.rows(), 3,
-                                                     [&] { return normal(rng); });
+    const Vertices direction =
+        Vertices::NullaryExpr(rest.vertices.rows(), 3, [&] { return normal(rng); });
     const double up = solver.energy(solved + kStep * direction, targets) - best;
     const double down = solver.energy(solved - kStep * direction, targets) - best;
     EXPECT_GE(up, 0.0);

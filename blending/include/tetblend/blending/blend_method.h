@@ -21,15 +21,15 @@ namespace tetblend {
 
 /// Every blend method. Names (blendMethodName) are those of the command line.
 enum class BlendMethod {
-  kKaji,           ///< "kaji": phi(sum_k w_k psi(F_k)), Kaji–Ochiai §5 Blend
-  kKajiFrechet,    ///< "kaji-frechet": refined weighted Fréchet sum, Kaji–Ochiai Alg. 2
-  kLieBodies,      ///< "liebodies": p0 exp(sum_k w_k log(p0^-1 p_k)), Bansal–Tatu
-  kDualQuaternion, ///< "dq": polar; rotation by DLB (Kavan et al. §3.4), stretch in log space
-  kDib,            ///< "dib": as dq with dual-quaternion iterative blending (Kavan et al. §3.3)
-  kAlexa,          ///< "alexa": exp(sum_k w_k log F_k), Alexa's matrix-log blend
-  kPolarSlerp,     ///< "polar-slerp": polar; quaternion slerp-type rotation blend, linear stretch
-  kLinear,         ///< "linear": (1 - sum w) I + sum_k w_k F_k, then the stitch
-  kVertexLinear,   ///< "vertex-linear": (1 - sum w) x_rest + sum_k w_k x_k, no stitch
+  kKaji,            ///< "kaji": phi(sum_k w_k psi(F_k)), Kaji–Ochiai §5 Blend
+  kKajiFrechet,     ///< "kaji-frechet": refined weighted Fréchet sum, Kaji–Ochiai Alg. 2
+  kLieBodies,       ///< "liebodies": p0 exp(sum_k w_k log(p0^-1 p_k)), Bansal–Tatu
+  kDualQuaternion,  ///< "dq": polar; rotation by DLB (Kavan et al. §3.4), stretch in log space
+  kDib,             ///< "dib": as dq with dual-quaternion iterative blending (Kavan et al. §3.3)
+  kAlexa,           ///< "alexa": exp(sum_k w_k log F_k), Alexa's matrix-log blend
+  kPolarSlerp,      ///< "polar-slerp": polar; quaternion slerp-type rotation blend, linear stretch
+  kLinear,          ///< "linear": (1 - sum w) I + sum_k w_k F_k, then the stitch
+  kVertexLinear,    ///< "vertex-linear": (1 - sum w) x_rest + sum_k w_k x_k, no stitch
 };
 
 /// All methods, in the order above.
@@ -42,13 +42,14 @@ std::string blendMethodName(BlendMethod method);
 BlendMethod blendMethodFromName(const std::string& name);
 
 /// True for the methods that take logarithms of rotations and so depend on
-/// the rotation-consistency option (kaji, kaji-frechet, liebodies).
+/// the rotation-consistency option (kaji, liebodies). kaji-frechet takes
+/// principal logarithms relative to its running mean (kaji_blend.h).
 bool usesRotationLogs(BlendMethod method);
 
 /// What a method needs to parametrise the examples once.
 struct BlendInput {
-  const TetMesh* rest = nullptr;         ///< #V vertices, #T tets
-  const RestTetData* restData = nullptr; ///< from restTetData(*rest)
+  const TetMesh* rest = nullptr;                    ///< #V vertices, #T tets
+  const RestTetData* restData = nullptr;            ///< from restTetData(*rest)
   const std::vector<Vertices>* examples = nullptr;  ///< n examples, #V by 3 each
   /// n fields of #T deformation gradients F_kj (deformationGradients()).
   const std::vector<std::vector<Eigen::Matrix3d>>* gradients = nullptr;
@@ -61,7 +62,7 @@ struct BlendInput {
 
 /// A method prepared for one rest mesh and its examples.
 class TetMapBlender {
-public:
+ public:
   virtual ~TetMapBlender() = default;
   /// The method this object implements.
   virtual BlendMethod method() const = 0;

@@ -14,9 +14,15 @@ namespace tetblend {
 /// Rotation vectors (radians) of #T per-tet rotations (3 by 3, SO(3)).
 /// Consistent: in each face-connected component the seed is the tet with the
 /// smallest principal rotation angle (lowest index on ties), which takes its
-/// principal logarithm; every other tet takes the logarithm closest to that
-/// of the tet it was reached from in a breadth-first search from the seed
-/// (Kaji–Ochiai Alg. 1). Not consistent: principal logarithms (|omega| <= pi).
+/// principal logarithm; every other tet, reached breadth-first from the seed,
+/// takes the logarithm closest (Kaji–Ochiai Alg. 1) to a prediction: its
+/// parent's prediction plus the principal log of the relative rotation
+/// R_parent^T R_tet. The prediction snaps to the chosen logarithm when they
+/// are within pi/2 (same branch); otherwise (a rotation with no logarithm on
+/// the continued branch, e.g. I + tilt inside a 2 pi twist) the tet keeps its
+/// closest logarithm and passes the prediction on, so one such tet does not
+/// drop the turns of everything reached through it. Not consistent: principal
+/// logarithms (|omega| <= pi).
 /// `adjacency` and `components` describe the same #T tets.
 std::vector<Eigen::Vector3d> rotationLogs(const std::vector<Eigen::Matrix3d>& rotations,
                                           const TetAdjacency& adjacency,

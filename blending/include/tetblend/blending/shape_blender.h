@@ -24,7 +24,7 @@ struct ShapeBlenderOptions {
   /// blend(weights). More can be added later with ShapeBlender::prepare.
   std::vector<BlendMethod> methods = {BlendMethod::kKaji};
   /// Consistent rotation logarithms across neighbouring tets
-  /// (rotation_consistency.h) for kaji, kaji-frechet and liebodies.
+  /// (rotation_consistency.h) for kaji and liebodies.
   bool rotationConsistency = true;
   /// Factorisation of the stitch.
   StitchOptions stitch;
@@ -40,14 +40,14 @@ struct BlendTimings {
 /// One blended shape.
 struct BlendResult {
   BlendMethod method = BlendMethod::kKaji;
-  Vertices vertices;                      ///< #V by 3, the rest's vertex order
-  std::vector<Eigen::Matrix3d> targets;   ///< #T blended maps B_j (empty for vertex-linear)
+  Vertices vertices;                     ///< #V by 3, the rest's vertex order
+  std::vector<Eigen::Matrix3d> targets;  ///< #T blended maps B_j (empty for vertex-linear)
   BlendTimings timings;
 };
 
 /// A rest mesh and its examples, parametrised and factored once.
 class ShapeBlender {
-public:
+ public:
   /// `rest`: #V vertices, #T positively oriented tets; `examples`: n >= 1
   /// vertex sets (#V by 3 each) with the rest's tets. Throws InputError for an
   /// empty example list, a size mismatch, a rest tet with volume <= 0 or an
@@ -71,8 +71,7 @@ public:
   /// the method cannot blend these weights.
   BlendResult blend(const std::vector<double>& weights, BlendMethod method) const;
   /// As blend, reusing the storage of `result`. Not safe to call concurrently.
-  void blendInto(const std::vector<double>& weights, BlendMethod method,
-                 BlendResult& result) const;
+  void blendInto(const std::vector<double>& weights, BlendMethod method, BlendResult& result) const;
 
   int exampleCount() const;
   const TetMesh& rest() const;
@@ -82,7 +81,7 @@ public:
   /// Blended component centroids (1 - sum w) c_rest + sum_k w_k c_k (#C by 3).
   Centroids blendedCentroids(const std::vector<double>& weights) const;
 
-private:
+ private:
   TetMesh rest_;
   std::vector<Vertices> examples_;
   ShapeBlenderOptions options_;

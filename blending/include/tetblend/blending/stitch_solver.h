@@ -49,7 +49,7 @@ struct StitchTimings {
 /// right-hand side sums each vertex's tets in a fixed order) but not safe to
 /// call concurrently on one solver (the factorisation keeps a workspace).
 class StitchSolver {
-public:
+ public:
   /// Builds the gradient operator of `rest` (#V by 3 vertices, #T by 4 tets)
   /// and factors G^T W G. Throws InputError for a rest tet with volume <= 0
   /// and NumericalError if the factorisation fails.
@@ -88,7 +88,7 @@ public:
   /// The stitch energy E(x) = sum_j vol_j ||grad_j(x) - B_j||_F^2.
   double energy(const Vertices& x, const std::vector<Eigen::Matrix3d>& targets) const;
 
-private:
+ private:
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };
