@@ -98,8 +98,8 @@ TEST(Se3, LeftJacobianMatchesIntegralOracleOnBothSidesOfSeries) {
 TEST(Se3, SeriesAndClosedFormAgreeAtTheSwitch) {
   // The series and the closed form must meet continuously at the threshold:
   // evaluated 2e-14 rad apart across it, V and V^{-1} may differ only by that
-  // step times |dV/dtheta|_F <= 1, plus round-off. A 10% error in a theta^4
-  // series coefficient would show as ~1e-12.
+  // step times |dV/dtheta|_F <= 1, plus round-off. An error in a theta^2
+  // series term would show as >= 1e-7, a missing theta^4 term as ~2e-13.
   const Eigen::Vector3d axis = Eigen::Vector3d(2, 1, -1).normalized();
   const double below = kSe3SeriesThreshold * (1.0 - 1e-12);
   const double above = kSe3SeriesThreshold * (1.0 + 1e-12);
