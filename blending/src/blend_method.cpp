@@ -5,6 +5,7 @@
 
 #include "blend_common.h"
 #include "tetblend/blending/baseline_blend.h"
+#include "tetblend/blending/dq_blend.h"
 #include "tetblend/blending/kaji_blend.h"
 #include "tetblend/core/error.h"
 
@@ -84,6 +85,9 @@ std::unique_ptr<TetMapBlender> prepareTetMapBlender(BlendMethod method, const Bl
     case BlendMethod::kKaji:
     case BlendMethod::kKajiFrechet:
       return prepareKajiBlender(method, input);
+    case BlendMethod::kDualQuaternion:
+    case BlendMethod::kDib:
+      return prepareDualQuaternionBlender(method, input);
     case BlendMethod::kVertexLinear:
       throw InputError("vertex-linear blends vertex positions and has no per-tet maps");
     default:
