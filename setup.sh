@@ -9,6 +9,7 @@ packages=(
   libeigen3-dev libcgal-dev libtet1.5-dev libsuitesparse-dev libceres-dev
   libvtk9-dev libcli11-dev nlohmann-json3-dev libtbb-dev
   libgtest-dev libgmock-dev libbenchmark-dev
+  libcgal-demo  # closed test meshes: data.tar.gz with data/meshes/*.off
 )
 
 missing=()
