@@ -33,11 +33,12 @@ int skippedEntrySize(std::string_view keyword) {
 TetMesh readMedit(const std::string& path) {
   const std::string text = readFileBytes(path);
   TextTokens tokens(text);
-  const auto nextToken = [&](const std::string& what) {
+  // `what` is a string or a callable giving one (built only on failure).
+  const auto nextToken = [&](const auto& what) {
     std::string_view token;
     if (!tokens.next(token)) {
       throwAtLine(path, tokens.lineNumber(),
-                  "file ends before " + what + ": the file is truncated");
+                  "file ends before " + describe(what) + ": the file is truncated");
     }
     return token;
   };
@@ -66,12 +67,13 @@ TetMesh readMedit(const std::string& path) {
       for (int v = 0; v < count; ++v) {
         Eigen::RowVector3d p;
         for (int c = 0; c < 3; ++c) {
-          p[c] = parseDouble(nextToken("vertex " + std::to_string(v)), path, tokens.lineNumber(),
-                             "coordinate of vertex " + std::to_string(v));
+          p[c] = parseDouble(nextToken([v] { return "vertex " + std::to_string(v); }), path,
+                             tokens.lineNumber(),
+                             [v] { return "coordinate of vertex " + std::to_string(v); });
         }
         checkFiniteVertex(p, path, std::to_string(tokens.lineNumber()), v);
         mesh.vertices.row(v) = p;
-        nextToken("the reference of vertex " + std::to_string(v));
+        nextToken([v] { return "the reference of vertex " + std::to_string(v); });
       }
       haveVertices = true;
     } else if (keyword == "Tetrahedra") {
@@ -79,14 +81,14 @@ TetMesh readMedit(const std::string& path) {
       const int count = nextCount("the tet count");
       mesh.tets.resize(count, 4);
       for (int t = 0; t < count; ++t) {
-        const std::string element = "tet " + std::to_string(t) + " (0-based)";
+        const auto element = [t] { return "tet " + std::to_string(t) + " (0-based)"; };
         for (int c = 0; c < 4; ++c) {
           const long long index = parseInteger(nextToken(element), path, tokens.lineNumber(),
-                                               "vertex index of " + element);
+                                               [&] { return "vertex index of " + element(); });
           mesh.tets(t, c) = checkedIndex(index, 1, static_cast<int>(mesh.vertices.rows()), path,
                                          tokens.lineNumber(), element);
         }
-        nextToken("the reference of " + element);
+        nextToken([&] { return "the reference of " + element(); });
       }
     } else if (keyword == "Hexahedra" || keyword == "Prisms" || keyword == "Pyramids") {
       throwAtLine(path, line,
@@ -101,7 +103,7 @@ TetMesh readMedit(const std::string& path) {
       }
       const int count = nextCount("the " + std::string(keyword) + " count");
       for (long long i = 0; i < static_cast<long long>(count) * size; ++i) {
-        nextToken("the end of section " + std::string(keyword));
+        nextToken([keyword] { return "the end of section " + std::string(keyword); });
       }
     }
   }

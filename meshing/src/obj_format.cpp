@@ -37,8 +37,9 @@ SurfaceMesh readObj(const std::string& path) {
       Face face{{0, 0, 0}, lines.lineNumber(), positions.size()};
       for (int c = 0; c < 3; ++c) {
         const std::string_view corner = tokens[1 + c];
-        face.corner[c] = parseInteger(corner.substr(0, corner.find('/')), path, lines.lineNumber(),
-                                      "vertex index of face " + std::to_string(faces.size()));
+        face.corner[c] =
+            parseInteger(corner.substr(0, corner.find('/')), path, lines.lineNumber(),
+                         [&] { return "vertex index of face " + std::to_string(faces.size()); });
       }
       faces.push_back(face);
     }
@@ -51,7 +52,7 @@ SurfaceMesh readObj(const std::string& path) {
   const int count = static_cast<int>(positions.size());
   mesh.triangles.resize(static_cast<Eigen::Index>(faces.size()), 3);
   for (std::size_t f = 0; f < faces.size(); ++f) {
-    const std::string element = "face " + std::to_string(f) + " (0-based)";
+    const auto element = [f] { return "face " + std::to_string(f) + " (0-based)"; };
     for (int c = 0; c < 3; ++c) {
       long long index = faces[f].corner[c];
       if (index < 0) {
@@ -59,7 +60,7 @@ SurfaceMesh readObj(const std::string& path) {
         const long long resolved = static_cast<long long>(faces[f].verticesBefore) + index + 1;
         if (resolved < 1) {
           throwAtLine(path, faces[f].line,
-                      element + ": relative index " + std::to_string(index) + " reaches before " +
+                      element() + ": relative index " + std::to_string(index) + " reaches before " +
                           "the first vertex (only " + std::to_string(faces[f].verticesBefore) +
                           " defined so far): fix the face");
         }

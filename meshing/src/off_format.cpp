@@ -55,22 +55,22 @@ SurfaceMesh readOff(const std::string& path) {
                       " faces: fix the header or the data");
     }
     const auto& tokens = lines.tokens();
-    const std::string element = "face " + std::to_string(f) + " (0-based)";
-    const long long corners =
-        parseInteger(tokens[0], path, lines.lineNumber(), "vertex count of " + element);
+    const auto element = [f] { return "face " + std::to_string(f) + " (0-based)"; };
+    const long long corners = parseInteger(tokens[0], path, lines.lineNumber(),
+                                           [&] { return "vertex count of " + element(); });
     if (corners != 3) {
       throwAtLine(path, lines.lineNumber(),
-                  element + " has " + std::to_string(corners) +
+                  element() + " has " + std::to_string(corners) +
                       " vertices: " + (corners > 3 ? "triangulate it first" : "a face needs 3"));
     }
     if (tokens.size() < 4) {
       throwAtLine(
           path, lines.lineNumber(),
-          element + ": expected 3 vertex indices, found " + std::to_string(tokens.size() - 1));
+          element() + ": expected 3 vertex indices, found " + std::to_string(tokens.size() - 1));
     }
     for (int c = 0; c < 3; ++c) {
-      const long long index =
-          parseInteger(tokens[1 + c], path, lines.lineNumber(), "vertex index of " + element);
+      const long long index = parseInteger(tokens[1 + c], path, lines.lineNumber(),
+                                           [&] { return "vertex index of " + element(); });
       mesh.triangles(f, c) = checkedIndex(index, 0, vertexCount, path, lines.lineNumber(), element);
     }
   }

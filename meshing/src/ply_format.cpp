@@ -82,11 +82,12 @@ class BinaryCursor {
   BinaryCursor(const std::string& path, std::string_view data, std::size_t offset, bool little)
       : path_(path), data_(data), offset_(offset), swap_(little != hostIsLittleEndian()) {}
 
-  double read(Scalar type, const std::string& what) {
+  template <typename What>
+  double read(Scalar type, const What& what) {
     const std::size_t size = scalarSize(type);
     if (offset_ + size > data_.size()) {
       throw InputError(path_ + ": byte offset " + std::to_string(offset_) + ": file ends inside " +
-                       what + ": the file is truncated");
+                       describe(what) + ": the file is truncated");
     }
     unsigned char bytes[8];
     std::memcpy(bytes, data_.data() + offset_, size);
@@ -196,27 +197,31 @@ class ValueSource {
         binary_(path, text, lines.endOffset(), encoding == Encoding::BinaryLittle) {}
 
   // Starts a new element instance (one line in ascii).
-  void beginRow(const std::string& what) {
+  template <typename What>
+  void beginRow(const What& what) {
     if (!ascii_) return;
     if (!lines_.next()) {
       throwAtLine(path_, lines_.lineNumber(),
-                  "file ends before " + what + ": the file is truncated");
+                  "file ends before " + describe(what) + ": the file is truncated");
     }
     column_ = 0;
   }
-  double value(Scalar type, const std::string& what) {
+  template <typename What>
+  double value(Scalar type, const What& what) {
     if (!ascii_) return binary_.read(type, what);
     if (column_ >= lines_.tokens().size()) {
-      throwAtLine(path_, lines_.lineNumber(), "too few values on the line for " + what);
+      throwAtLine(path_, lines_.lineNumber(), "too few values on the line for " + describe(what));
     }
     const std::string_view token = lines_.tokens()[column_++];
     return type == Scalar::Float32 || type == Scalar::Float64
                ? parseDouble(token, path_, lines_.lineNumber(), what)
                : static_cast<double>(parseInteger(token, path_, lines_.lineNumber(), what));
   }
-  std::string where() const {
-    return ascii_ ? std::to_string(lines_.lineNumber())
-                  : " byte offset " + std::to_string(binary_.offset());
+  // The current line (ascii) or byte offset (binary).
+  std::size_t position() const { return ascii_ ? lines_.lineNumber() : binary_.offset(); }
+  // The "<line>" or " byte offset <n>" part of a message for `position`.
+  std::string where(std::size_t position) const {
+    return ascii_ ? std::to_string(position) : " byte offset " + std::to_string(position);
   }
 
  private:
@@ -250,33 +255,42 @@ SurfaceMesh readPly(const std::string& path) {
     if (isFace) mesh.triangles.resize(e.count, 3);
     int xyzFound = 0;
     bool indicesFound = false;
+    std::vector<int> axes;
+    for (const Property& p : e.properties) {
+      axes.push_back(p.name == "x" ? 0 : p.name == "y" ? 1 : p.name == "z" ? 2 : -1);
+    }
     for (int i = 0; i < e.count; ++i) {
-      const std::string element = e.name + " " + std::to_string(i) + " (0-based)";
+      const auto element = [&e, i] { return e.name + " " + std::to_string(i) + " (0-based)"; };
       source.beginRow(element);
-      const std::string where = source.where();
-      for (const Property& p : e.properties) {
-        const int axis = p.name == "x" ? 0 : p.name == "y" ? 1 : p.name == "z" ? 2 : -1;
+      const std::size_t rowPosition = source.position();
+      const auto where = [&] { return source.where(rowPosition); };
+      for (std::size_t k = 0; k < e.properties.size(); ++k) {
+        const Property& p = e.properties[k];
+        const int axis = axes[k];
         if (!p.isList) {
-          const double value = source.value(p.type, "property '" + p.name + "' of " + element);
+          const double value =
+              source.value(p.type, [&] { return "property '" + p.name + "' of " + element(); });
           if (isVertex && axis >= 0) {
             mesh.vertices(i, axis) = value;
             xyzFound |= 1 << axis;
           }
           continue;
         }
-        const double corners = source.value(p.countType, "list length of " + element);
+        const double corners =
+            source.value(p.countType, [&] { return "list length of " + element(); });
         const bool indices = isFace && (p.name == "vertex_indices" || p.name == "vertex_index");
         if (indices && corners != 3) {
-          throw InputError(path + ":" + where + ": face " + std::to_string(i) + " (0-based) has " +
-                           std::to_string(static_cast<long long>(corners)) + " vertices: " +
-                           (corners > 3 ? "triangulate it first" : "a face needs 3"));
+          throw InputError(
+              path + ":" + where() + ": face " + std::to_string(i) + " (0-based) has " +
+              std::to_string(static_cast<long long>(corners)) +
+              " vertices: " + (corners > 3 ? "triangulate it first" : "a face needs 3"));
         }
-        if (corners < 0) throw InputError(path + ":" + where + ": negative list length");
+        if (corners < 0) throw InputError(path + ":" + where() + ": negative list length");
         for (int c = 0; c < static_cast<int>(corners); ++c) {
-          const double value = source.value(p.type, "list entry of " + element);
+          const double value = source.value(p.type, [&] { return "list entry of " + element(); });
           if (!indices) continue;
           if (value < 0 || value >= vertexCount) {
-            throw InputError(path + ":" + where + ": " + element + ": index " +
+            throw InputError(path + ":" + where() + ": " + element() + ": index " +
                              std::to_string(static_cast<long long>(value)) + " out of range 0.." +
                              std::to_string(vertexCount - 1) +
                              ": it refers to a vertex that does not exist");
@@ -289,7 +303,7 @@ SurfaceMesh readPly(const std::string& path) {
         if (xyzFound != 7) {
           throw InputError(path + ": the vertex element lacks x, y or z properties");
         }
-        checkFiniteVertex(mesh.vertices.row(i), path, where, i);
+        checkFiniteVertex(mesh.vertices.row(i), path, where(), i);
       }
       if (isFace && !indicesFound) {
         throw InputError(path + ": the face element has no 'vertex_indices' list property");

@@ -79,18 +79,18 @@ Tets readEle(const std::string& path, long long base, int vertexCount) {
                       " tets: the file is truncated");
     }
     const auto& t = lines.tokens();
-    const std::string element = "tet " + std::to_string(e) + " (0-based)";
+    const auto element = [e] { return "tet " + std::to_string(e) + " (0-based)"; };
     if (t.size() < 5) {
       throwAtLine(path, lines.lineNumber(),
-                  element +
+                  element() +
                       ": expected an index and 4 vertex indices, "
                       "found " +
                       std::to_string(t.size()) + " values");
     }
     parseInteger(t[0], path, lines.lineNumber(), "tet index");
     for (int c = 0; c < 4; ++c) {
-      const long long index =
-          parseInteger(t[1 + c], path, lines.lineNumber(), "vertex index of " + element);
+      const long long index = parseInteger(t[1 + c], path, lines.lineNumber(),
+                                           [&] { return "vertex index of " + element(); });
       tets(e, c) = checkedIndex(index, base, vertexCount, path, lines.lineNumber(), element);
     }
   }

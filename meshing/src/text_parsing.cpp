@@ -77,37 +77,40 @@ bool TextTokens::next(std::string_view& token) {
   return true;
 }
 
-double parseDouble(std::string_view token, const std::string& path, std::size_t line,
-                   const std::string& what) {
+bool tryParseDouble(std::string_view token, double& value) {
+  if (!token.empty() && token.front() == '+') token.remove_prefix(1);
+  const auto [end, ec] = std::from_chars(token.data(), token.data() + token.size(), value);
+  return !token.empty() && ec == std::errc() && end == token.data() + token.size();
+}
+
+bool tryParseInteger(std::string_view token, long long& value) {
+  if (!token.empty() && token.front() == '+') token.remove_prefix(1);
+  const auto [end, ec] = std::from_chars(token.data(), token.data() + token.size(), value);
+  return !token.empty() && ec == std::errc() && end == token.data() + token.size();
+}
+
+void throwBadNumber(std::string_view token, const std::string& path, std::size_t line,
+                    const std::string& what, bool integer) {
+  double ignored = 0.0;
   std::string_view digits = token;
   if (!digits.empty() && digits.front() == '+') digits.remove_prefix(1);
-  double value = 0.0;
-  const auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
-  if (ec == std::errc::result_out_of_range) {
+  const auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), ignored);
+  if (!integer && ec == std::errc::result_out_of_range && end == digits.data() + digits.size()) {
     throwAtLine(
         path, line,
         what + " '" + std::string(token) + "' is out of the double range: rescale the data");
   }
-  if (ec != std::errc() || end != digits.data() + digits.size() || digits.empty()) {
-    throwAtLine(
-        path, line,
-        "expected a number for " + what + ", found '" + std::string(token) + "': fix the file");
-  }
-  return value;
+  throwAtLine(path, line,
+              std::string("expected ") + (integer ? "an integer" : "a number") + " for " + what +
+                  ", found '" + std::string(token) + "': fix the file");
 }
 
-long long parseInteger(std::string_view token, const std::string& path, std::size_t line,
-                       const std::string& what) {
-  std::string_view digits = token;
-  if (!digits.empty() && digits.front() == '+') digits.remove_prefix(1);
-  long long value = 0;
-  const auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
-  if (ec != std::errc() || end != digits.data() + digits.size() || digits.empty()) {
-    throwAtLine(
-        path, line,
-        "expected an integer for " + what + ", found '" + std::string(token) + "': fix the file");
-  }
-  return value;
+void throwIndexOutOfRange(long long value, long long base, int count, const std::string& path,
+                          std::size_t line, const std::string& element) {
+  throwAtLine(path, line,
+              element + ": index " + std::to_string(value) + " out of range " +
+                  std::to_string(base) + ".." + std::to_string(base + count - 1) +
+                  ": it refers to a vertex that does not exist");
 }
 
 int parseCount(std::string_view token, const std::string& path, std::size_t line,
@@ -143,21 +146,10 @@ Eigen::RowVector3d parseVertex(const std::vector<std::string_view>& tokens, std:
   Eigen::RowVector3d p;
   for (int c = 0; c < 3; ++c) {
     p[c] = parseDouble(tokens[first + c], path, line,
-                       "coordinate of vertex " + std::to_string(vertex));
+                       [vertex] { return "coordinate of vertex " + std::to_string(vertex); });
   }
   checkFiniteVertex(p, path, std::to_string(line), vertex);
   return p;
-}
-
-int checkedIndex(long long value, long long base, int count, const std::string& path,
-                 std::size_t line, const std::string& element) {
-  if (value < base || value >= base + count) {
-    throwAtLine(path, line,
-                element + ": index " + std::to_string(value) + " out of range " +
-                    std::to_string(base) + ".." + std::to_string(base + count - 1) +
-                    ": it refers to a vertex that does not exist");
-  }
-  return static_cast<int>(value - base);
 }
 
 void appendDouble(std::string& out, double value) {

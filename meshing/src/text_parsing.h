@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <string>
 #include <string_view>
+#include <type_traits>
 #include <vector>
 
 #include <Eigen/Core>
@@ -61,14 +62,49 @@ class TextTokens {
   bool started_ = false;
 };
 
+/// A description as a string: strings as they are, callables by calling them,
+/// so hot loops build their error messages only when they fail.
+template <typename What>
+std::string describe(const What& what) {
+  if constexpr (std::is_invocable_v<const What&>) {
+    return std::string(what());
+  } else {
+    return std::string(what);
+  }
+}
+
+/// from_chars over the whole token (a leading '+' is allowed); false if the
+/// token is not entirely a number or out of range. "nan"/"inf" parse.
+bool tryParseDouble(std::string_view token, double& value);
+bool tryParseInteger(std::string_view token, long long& value);
+
+/// InputError for a token that is not a number (`integer`: what was expected).
+[[noreturn]] void throwBadNumber(std::string_view token, const std::string& path, std::size_t line,
+                                 const std::string& what, bool integer);
+
+/// InputError "index <value> out of range <base>..<base+count-1>".
+[[noreturn]] void throwIndexOutOfRange(long long value, long long base, int count,
+                                       const std::string& path, std::size_t line,
+                                       const std::string& element);
+
 /// Parses a whole token as a double ("nan"/"inf" parse, finiteness is checked
-/// separately); InputError naming `what` and the token otherwise.
+/// separately); InputError naming `what` (string or callable) and the token.
+template <typename What>
 double parseDouble(std::string_view token, const std::string& path, std::size_t line,
-                   const std::string& what);
+                   const What& what) {
+  double value = 0.0;
+  if (!tryParseDouble(token, value)) throwBadNumber(token, path, line, describe(what), false);
+  return value;
+}
 
 /// Parses a whole token as an integer; InputError naming `what` otherwise.
+template <typename What>
 long long parseInteger(std::string_view token, const std::string& path, std::size_t line,
-                       const std::string& what);
+                       const What& what) {
+  long long value = 0;
+  if (!tryParseInteger(token, value)) throwBadNumber(token, path, line, describe(what), true);
+  return value;
+}
 
 /// Parses a non-negative element count that fits in an int.
 int parseCount(std::string_view token, const std::string& path, std::size_t line,
@@ -84,9 +120,16 @@ void checkFiniteVertex(const Eigen::RowVector3d& position, const std::string& pa
                        const std::string& where, int vertex);
 
 /// Converts a file index `value` with numbering starting at `base` into a
-/// 0-based index, refusing values outside base..base+count-1.
+/// 0-based index, refusing values outside base..base+count-1; `element`
+/// (string or callable) names the element in the message.
+template <typename Element>
 int checkedIndex(long long value, long long base, int count, const std::string& path,
-                 std::size_t line, const std::string& element);
+                 std::size_t line, const Element& element) {
+  if (value < base || value >= base + count) {
+    throwIndexOutOfRange(value, base, count, path, line, describe(element));
+  }
+  return static_cast<int>(value - base);
+}
 
 /// Appends the shortest decimal form of `value` that reads back exactly.
 void appendDouble(std::string& out, double value);
