@@ -5,6 +5,7 @@
 #include <vtkCellArray.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
+#include <vtkSTLReader.h>
 #include <vtkSmartPointer.h>
 #include <vtkXMLPolyDataWriter.h>
 
@@ -157,6 +158,46 @@ TEST(SurfaceIo, StlMergesCoincidentCornersInFirstAppearanceOrder) {
     const SurfaceMesh m = readSurface(dir.file(name));
     EXPECT_TRUE(io_test::sameBits(expected, m.vertices));
     EXPECT_EQ(triangles, m.triangles);
+  }
+}
+
+TEST(SurfaceIo, StlWeldingAgreesWithVtkStlReader) {
+  // Oracle: VTK's vtkSTLReader merges exactly coincident points with
+  // vtkMergePoints, numbering them in order of first appearance too.
+  TempDir dir;
+  std::mt19937 rng(io_test::testSeed("SurfaceIo.StlWeldingAgreesWithVtkStlReader"));
+  const SurfaceMesh mesh = io_test::randomSurface(rng, 300, 900);
+  io_test::ByteBuilder stl(true);
+  stl.text(std::string(80, ' ')).put(static_cast<std::uint32_t>(mesh.triangles.rows()));
+  for (Eigen::Index f = 0; f < mesh.triangles.rows(); ++f) {
+    stl.put(0.0f).put(0.0f).put(0.0f);
+    for (int c = 0; c < 3; ++c) {
+      for (int k = 0; k < 3; ++k)
+        stl.put(static_cast<float>(mesh.vertices(mesh.triangles(f, c), k)));
+    }
+    stl.put(std::uint16_t{0});
+  }
+  const std::string path = dir.file("random.stl");
+  writeText(path, stl.bytes());
+  const SurfaceMesh ours = readSurface(path);
+
+  auto reader = vtkSmartPointer<vtkSTLReader>::New();
+  reader->SetFileName(path.c_str());
+  reader->Update();
+  vtkPolyData* theirs = reader->GetOutput();
+  ASSERT_EQ(ours.vertices.rows(), theirs->GetNumberOfPoints());
+  ASSERT_EQ(ours.triangles.rows(), theirs->GetNumberOfPolys());
+  for (vtkIdType v = 0; v < theirs->GetNumberOfPoints(); ++v) {
+    double p[3];
+    theirs->GetPoint(v, p);
+    for (int k = 0; k < 3; ++k) EXPECT_EQ(ours.vertices(v, k), p[k]);
+  }
+  vtkIdType count = 0;
+  const vtkIdType* ids = nullptr;
+  theirs->GetPolys()->InitTraversal();
+  for (Eigen::Index f = 0; theirs->GetPolys()->GetNextCell(count, ids) != 0; ++f) {
+    ASSERT_EQ(count, 3);
+    for (int c = 0; c < 3; ++c) EXPECT_EQ(ours.triangles(f, c), ids[c]);
   }
 }
 
