@@ -216,6 +216,7 @@ TEST(TetGenMesher, RealMeshesFromCgalDemo) {
   const std::vector<std::string> names = {"sphere.off", "elephant.off"};
   std::string command = "tar -xzf '" + tarball + "' -C '" + dir.string() + "'";
   for (const std::string& n : names) command += " data/meshes/" + n;
+  command += " data/meshes/camel.off";
   ASSERT_EQ(std::system(command.c_str()), 0) << command;
   for (const std::string& n : names) {
     SCOPED_TRACE(n);
@@ -227,6 +228,14 @@ TEST(TetGenMesher, RealMeshesFromCgalDemo) {
     options.sourceName = path;
     expectBoundaryPreserved(surface, tetrahedralize(surface, options));
   }
+  // camel.off intersects itself: named by validation, refused before TetGen
+  // (which would fail on it).
+  const std::string camel = (dir / "data" / "meshes" / "camel.off").string();
+  const SurfaceMesh surface = readSurface(camel);
+  const SurfaceValidation v = validateSurface(surface, camel);
+  ASSERT_FALSE(v.problems.empty());
+  EXPECT_EQ(v.problems.front().kind, SurfaceProblemKind::kSelfIntersection);
+  EXPECT_THROW(tetrahedralize(surface), InputError);
   std::filesystem::remove_all(dir);
 }
 

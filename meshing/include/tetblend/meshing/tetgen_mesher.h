@@ -51,6 +51,12 @@ struct TetGenOptions {
 /// InputError (self-intersection, tiny features, very close facets, invalid
 /// input) or NumericalError / Error (internal error, out of memory) with a
 /// message saying what to do.
+///
+/// Known limitation of Debian's TetGen 1.5.0: when TetGen itself fails, its
+/// terminatetetgen() frees the mesh and its destructor frees it again, so the
+/// process crashes before the error code reaches this wrapper. Validation
+/// catches the common cause (self-intersection) first; nearly touching
+/// facets or tiny features (codes 4, 5) remain fatal with that build.
 TetMesh tetrahedralize(const SurfaceMesh& closedSurface, const TetGenOptions& options = {});
 
 }  // namespace tetblend
