@@ -122,9 +122,17 @@ void ShapeBlender::blendInto(const std::vector<double>& weights, BlendMethod met
   found->second->blendTargets(weights, result.targets);
   result.timings.blendSeconds = secondsSince(start);
   StitchTimings stitchTimings;
-  stitch_.solveInto(result.targets, blendedCentroids(weights), result.vertices, &stitchTimings);
+  const Centroids centroids = blendedCentroids(weights);
+  stitch_.solveInto(result.targets, centroids, result.vertices, &stitchTimings);
   result.timings.rhsSeconds = stitchTimings.rhsSeconds;
   result.timings.solveSeconds = stitchTimings.solveSeconds;
+  result.nonlinear = NonlinearStitchReport{};
+  if (options_.nonlinearStitch) {
+    start = Clock::now();
+    result.vertices = nonlinearStitch(stitch_, result.targets, result.vertices, centroids,
+                                      options_.nonlinear, &result.nonlinear);
+    result.timings.nonlinearSeconds = secondsSince(start);
+  }
 }
 
 int ShapeBlender::exampleCount() const { return static_cast<int>(examples_.size()); }

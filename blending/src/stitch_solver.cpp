@@ -166,6 +166,7 @@ int StitchSolver::tetCount() const { return static_cast<int>(impl_->tets.rows())
 int StitchSolver::componentCount() const { return static_cast<int>(impl_->componentSize.size()); }
 const std::vector<int>& StitchSolver::vertexComponent() const { return impl_->component; }
 const RestTetData& StitchSolver::restData() const { return impl_->rest; }
+const Tets& StitchSolver::tets() const { return impl_->tets; }
 StitchBackend StitchSolver::backend() const { return impl_->backend; }
 
 Centroids StitchSolver::componentCentroids(const Vertices& vertices) const {

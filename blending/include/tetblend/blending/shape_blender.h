@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "tetblend/blending/blend_method.h"
+#include "tetblend/blending/nonlinear_stitch.h"
 #include "tetblend/blending/stitch_solver.h"
 #include "tetblend/core/mesh_types.h"
 
@@ -28,13 +29,19 @@ struct ShapeBlenderOptions {
   bool rotationConsistency = true;
   /// Factorisation of the stitch.
   StitchOptions stitch;
+  /// Run the nonlinear stitch (nonlinear_stitch.h) after the linear one when
+  /// the linear result has inverted tets. Off by default (it costs Ceres
+  /// solves); not used by vertex-linear.
+  bool nonlinearStitch = false;
+  NonlinearStitchOptions nonlinear;
 };
 
 /// Wall-clock seconds of the parts of one blend.
 struct BlendTimings {
-  double blendSeconds = 0.0;  ///< per-tet target maps (or vertex blend)
-  double rhsSeconds = 0.0;    ///< stitch right-hand side
-  double solveSeconds = 0.0;  ///< back-substitution and centroid placement
+  double blendSeconds = 0.0;      ///< per-tet target maps (or vertex blend)
+  double rhsSeconds = 0.0;        ///< stitch right-hand side
+  double solveSeconds = 0.0;      ///< back-substitution and centroid placement
+  double nonlinearSeconds = 0.0;  ///< nonlinear stitch, when enabled
 };
 
 /// One blended shape.
@@ -43,6 +50,8 @@ struct BlendResult {
   Vertices vertices;                     ///< #V by 3, the rest's vertex order
   std::vector<Eigen::Matrix3d> targets;  ///< #T blended maps B_j (empty for vertex-linear)
   BlendTimings timings;
+  /// Filled when options.nonlinearStitch is set (zeros otherwise).
+  NonlinearStitchReport nonlinear;
 };
 
 /// A rest mesh and its examples, parametrised and factored once.

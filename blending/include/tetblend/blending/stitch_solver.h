@@ -66,6 +66,8 @@ class StitchSolver {
   const std::vector<int>& vertexComponent() const;
   /// The rest per-tet data (inverse edge matrices, volumes) the solver uses.
   const RestTetData& restData() const;
+  /// The rest tets (#T by 4).
+  const Tets& tets() const;
   /// The backend actually used.
   StitchBackend backend() const;
 
