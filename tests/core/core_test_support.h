@@ -5,6 +5,7 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <iostream>
@@ -44,9 +45,11 @@ inline Eigen::Matrix3d randomRotation(std::mt19937& rng) {
 }
 
 /// U diag(sigma) V^T with random rotations U, V, sigma_max = scale,
-/// sigma_min = scale / cond, the middle singular value log-uniform between.
+/// sigma_min = scale / cond, the middle singular value log-uniform in
+/// [max(1e-2, 1/cond), 1] * scale, so that det A >= 1e-2 scale^3 / cond keeps a
+/// sign that round-off cannot flip (for cond <= 1e12).
 inline Eigen::Matrix3d randomMatrixWithCond(std::mt19937& rng, double cond, double scale = 1.0) {
-  const double middle = std::exp(uniform(rng, -std::log(cond), 0.0));
+  const double middle = std::exp(uniform(rng, -std::min(std::log(cond), std::log(100.0)), 0.0));
   const Eigen::Vector3d sigma = scale * Eigen::Vector3d(1.0, middle, 1.0 / cond);
   return randomRotation(rng) * sigma.asDiagonal() * randomRotation(rng).transpose();
 }

@@ -1,0 +1,126 @@
+#include "tetblend/core/polar.h"
+
+#include <gtest/gtest.h>
+
+#include <Eigen/SVD>
+
+#include <vector>
+
+#include "core_test_support.h"
+#include "tetblend/core/error.h"
+
+namespace tetblend {
+namespace {
+
+using core_test::randomMatrixWithCond;
+using core_test::relativeError;
+using core_test::testSeed;
+
+// Orthonormality and symmetry of the factors: a few ulps.
+constexpr double kFactorTol = 1e-14;
+// A = R S reconstruction relative to |A|: backward stable, a few ulps.
+constexpr double kReconstructionTol = 1e-14;
+// Forward error of R against the SVD oracle U V^T is bounded by
+// eps * cond(A) (the polar factor's condition number is ~ 1/(s2 + s3)).
+constexpr double kForwardTolPerCond = 1e-14;
+
+void expectValidPolar(const Eigen::Matrix3d& a, const PolarDecomposition& p, double cond) {
+  const Eigen::Matrix3d& r = p.rotation;
+  const Eigen::Matrix3d& s = p.stretch;
+  ASSERT_TRUE(r.allFinite() && s.allFinite());
+  EXPECT_LE((r.transpose() * r - Eigen::Matrix3d::Identity()).norm(), kFactorTol);
+  EXPECT_NEAR(r.determinant(), 1.0, kFactorTol);
+  EXPECT_EQ(s, s.transpose());
+  EXPECT_LE(relativeError(r * s, a), kReconstructionTol);
+  // SVD oracle: R = U V^T, S = V Sigma V^T.
+  const Eigen::JacobiSVD<Eigen::Matrix3d> svd(a, Eigen::ComputeFullU | Eigen::ComputeFullV);
+  const Eigen::Matrix3d u = svd.matrixU(), v = svd.matrixV();
+  EXPECT_LE((r - u * v.transpose()).norm(), kForwardTolPerCond * cond);
+  EXPECT_LE(relativeError(s, v * svd.singularValues().asDiagonal() * v.transpose()),
+            kForwardTolPerCond * cond);
+}
+
+TEST(Polar, FixedCases) {
+  const Eigen::Matrix3d rot =
+      Eigen::AngleAxisd(2.0, Eigen::Vector3d(1, -2, 0.5).normalized()).toRotationMatrix();
+  const std::vector<Eigen::Matrix3d> cases = {
+      Eigen::Matrix3d::Identity(),
+      rot,
+      Eigen::Vector3d(3, 1e-4, 7).asDiagonal().toDenseMatrix(),
+      rot * Eigen::Vector3d(2, 2, 2).asDiagonal(),
+      1e6 * rot,
+      1e-6 * rot,
+      -Eigen::Matrix3d::Identity() * Eigen::Vector3d(1, 1, -1).asDiagonal()};  // pi rotation
+  for (const Eigen::Matrix3d& a : cases) {
+    SCOPED_TRACE(testing::Message() << "A =\n" << a);
+    const Eigen::JacobiSVD<Eigen::Matrix3d> svd(a);
+    const Eigen::Vector3d sigma = svd.singularValues();
+    expectValidPolar(a, polarDecompose(a), sigma(0) / sigma(2));
+  }
+}
+
+TEST(Polar, RandomAcrossConditionNumbers) {
+  std::mt19937 rng(testSeed("Polar.RandomAcrossConditionNumbers"));
+  for (double cond : {1.0, 10.0, 1e2, 1e4, 1e6, 1e8}) {
+    for (int i = 0; i < 200; ++i) {
+      const double scale = std::exp(core_test::uniform(rng, -6, 6));
+      const Eigen::Matrix3d a = randomMatrixWithCond(rng, cond, scale);
+      SCOPED_TRACE(testing::Message() << "cond " << cond << " A =\n" << a);
+      expectValidPolar(a, polarDecompose(a), cond);
+      if (HasFatalFailure() || HasNonfatalFailure()) return;
+    }
+  }
+}
+
+TEST(Polar, NearSingularNeverNaN) {
+  // sigma_min down to 1e-10 (and 1e-12) relative: factors finite, R a
+  // rotation, A = R S to round-off, log S finite.
+  std::mt19937 rng(testSeed("Polar.NearSingularNeverNaN"));
+  for (double cond : {1e10, 1e12}) {  // with sigma_2 >= 1e-2: det sign resolvable
+    for (int i = 0; i < 100; ++i) {
+      const Eigen::Matrix3d a = randomMatrixWithCond(rng, cond);
+      const PolarDecomposition p = polarDecompose(a);
+      ASSERT_TRUE(p.rotation.allFinite() && p.stretch.allFinite());
+      ASSERT_LE((p.rotation.transpose() * p.rotation - Eigen::Matrix3d::Identity()).norm(),
+                kFactorTol);
+      ASSERT_LE(relativeError(p.rotation * p.stretch, a), kReconstructionTol);
+      const PolarLogDecomposition pl = polarDecomposeLog(a);
+      ASSERT_TRUE(pl.stretchLog.allFinite());
+    }
+  }
+}
+
+TEST(Polar, StretchLogMatchesSvdOracle) {
+  std::mt19937 rng(testSeed("Polar.StretchLogMatchesSvdOracle"));
+  for (double cond : {1.0, 1e2, 1e4, 1e8}) {
+    for (int i = 0; i < 100; ++i) {
+      const Eigen::Matrix3d a = randomMatrixWithCond(rng, cond);
+      const Eigen::JacobiSVD<Eigen::Matrix3d> svd(a, Eigen::ComputeFullU | Eigen::ComputeFullV);
+      const Eigen::Matrix3d v = svd.matrixV();
+      const Eigen::Matrix3d oracle =
+          v * svd.singularValues().array().log().matrix().asDiagonal() * v.transpose();
+      const PolarLogDecomposition pl = polarDecomposeLog(a);
+      // log is applied to S whose entries carry eps|A| errors: the log of the
+      // smallest singular value moves by eps * cond.
+      ASSERT_LE((pl.stretchLog - oracle).norm(), kForwardTolPerCond * cond * 10) << "cond " << cond;
+      ASSERT_LE((pl.rotation - svd.matrixU() * v.transpose()).norm(), kForwardTolPerCond * cond);
+    }
+  }
+}
+
+TEST(Polar, NonPositiveDeterminantThrows) {
+  EXPECT_THROW(polarDecompose(Eigen::Vector3d(1, 1, -1).asDiagonal().toDenseMatrix()),
+               DomainError);  // reflection
+  EXPECT_THROW(polarDecompose(-Eigen::Matrix3d::Identity()), DomainError);
+  Eigen::Matrix3d singular;
+  singular << 1, 2, 3, 4, 5, 6, 7, 8, 9;  // rank 2 (det exactly 0 in doubles)
+  EXPECT_THROW(polarDecompose(singular), DomainError);
+  EXPECT_THROW(polarDecompose(Eigen::Matrix3d::Zero()), DomainError);
+  Eigen::Matrix3d nan = Eigen::Matrix3d::Identity();
+  nan(0, 1) = std::nan("");
+  EXPECT_THROW(polarDecompose(nan), DomainError);
+  EXPECT_THROW(polarDecomposeLog(-Eigen::Matrix3d::Identity()), DomainError);
+}
+
+}  // namespace
+}  // namespace tetblend
