@@ -1,6 +1,9 @@
 #include "tetblend/blending/baseline_blend.h"
 
+#include <unsupported/Eigen/MatrixFunctions>
+
 #include "blend_common.h"
+#include "tetblend/core/baselines.h"
 
 namespace tetblend {
 namespace {
@@ -42,12 +45,112 @@ class LinearBlender final : public TetMapBlender {
   std::vector<Eigen::Matrix3d> maps_;  // tet-major: all examples of a tet together
 };
 
+Eigen::Matrix4d homogeneous(const Eigen::Matrix3d& linear) {
+  Eigen::Matrix4d a = Eigen::Matrix4d::Identity();
+  a.topLeftCorner<3, 3>() = linear;
+  return a;
+}
+
+// Alexa: exp(sum_k w_k log F_kj). alexaBlend (core/baselines.h) checks each
+// map for a real principal logarithm once; the logarithms are kept so a
+// blend costs one matrix exponential per tet.
+class AlexaBlender final : public TetMapBlender {
+ public:
+  explicit AlexaBlender(const BlendInput& input) {
+    const auto sizes = blend_detail::checkInput(input);
+    tets_ = sizes.tets;
+    examples_ = sizes.examples;
+    logs_.resize(static_cast<size_t>(tets_) * examples_);
+    for (int k = 0; k < examples_; ++k) {
+      forEachTet(tets_, [&](int j) {
+        const Eigen::Matrix3d& f = (*input.gradients)[k][j];
+        try {
+          alexaBlend({1.0}, {homogeneous(f)});
+        } catch (const DomainError& error) {
+          blend_detail::rethrowForTet("alexa", k, j, error);
+        }
+        logs_[static_cast<size_t>(j) * examples_ + k] = f.log();
+      });
+    }
+  }
+  BlendMethod method() const override { return BlendMethod::kAlexa; }
+  void blendTargets(const std::vector<double>& weights,
+                    std::vector<Eigen::Matrix3d>& targets) const override {
+    checkWeights(weights, examples_);
+    targets.resize(tets_);
+    forEachTet(tets_, [&](int j) {
+      Eigen::Matrix3d sum = Eigen::Matrix3d::Zero();
+      for (int k = 0; k < examples_; ++k) {
+        sum += weights[k] * logs_[static_cast<size_t>(j) * examples_ + k];
+      }
+      targets[j] = sum.exp();
+    });
+  }
+
+ private:
+  int tets_ = 0;
+  int examples_ = 0;
+  std::vector<Eigen::Matrix3d> logs_;  // tet-major
+};
+
+// Polar + quaternion slerp (Shoemake–Duff) via polarSlerpBlend with the rest
+// (identity) as map 0 at weight 1 - sum w. The kernel decomposes its inputs
+// on every call, so this baseline costs n polar decompositions per tet and
+// blend.
+class PolarSlerpBlender final : public TetMapBlender {
+ public:
+  explicit PolarSlerpBlender(const BlendInput& input) {
+    const auto sizes = blend_detail::checkInput(input);
+    tets_ = sizes.tets;
+    examples_ = sizes.examples;
+    maps_.resize(static_cast<size_t>(tets_) * examples_);
+    forEachTet(tets_, [&](int j) {
+      for (int k = 0; k < examples_; ++k) {
+        maps_[static_cast<size_t>(j) * examples_ + k] = (*input.gradients)[k][j];
+      }
+    });
+  }
+  BlendMethod method() const override { return BlendMethod::kPolarSlerp; }
+  void blendTargets(const std::vector<double>& weights,
+                    std::vector<Eigen::Matrix3d>& targets) const override {
+    checkWeights(weights, examples_);
+    targets.resize(tets_);
+    std::vector<double> allWeights(examples_ + 1);
+    allWeights[0] = blend_detail::restWeight(weights);
+    std::copy(weights.begin(), weights.end(), allWeights.begin() + 1);
+    tbb::parallel_for(
+        tbb::blocked_range<int>(0, tets_, blend_detail::kTetGrain),
+        [&](const tbb::blocked_range<int>& range) {
+          std::vector<Eigen::Matrix4d> maps(examples_ + 1, Eigen::Matrix4d::Identity());
+          for (int j = range.begin(); j != range.end(); ++j) {
+            for (int k = 0; k < examples_; ++k) {
+              maps[k + 1] = homogeneous(maps_[static_cast<size_t>(j) * examples_ + k]);
+            }
+            try {
+              targets[j] = polarSlerpBlend(allWeights, maps).topLeftCorner<3, 3>();
+            } catch (const DomainError& error) {
+              blend_detail::rethrowForTet("polar-slerp", -1, j, error);
+            }
+          }
+        });
+  }
+
+ private:
+  int tets_ = 0;
+  int examples_ = 0;
+  std::vector<Eigen::Matrix3d> maps_;  // tet-major
+};
+
 }  // namespace
 
 std::unique_ptr<TetMapBlender> prepareBaselineBlender(BlendMethod method, const BlendInput& input) {
   switch (method) {
     case BlendMethod::kLinear:
       return std::make_unique<LinearBlender>(input);
+    case BlendMethod::kAlexa:
+      return std::make_unique<AlexaBlender>(input);
+    case BlendMethod::kPolarSlerp:
+      return std::make_unique<PolarSlerpBlender>(input);
     default:
       break;
   }

@@ -7,6 +7,7 @@
 #include "tetblend/blending/baseline_blend.h"
 #include "tetblend/blending/dq_blend.h"
 #include "tetblend/blending/kaji_blend.h"
+#include "tetblend/blending/lie_bodies_blend.h"
 #include "tetblend/core/error.h"
 
 namespace tetblend {
@@ -88,6 +89,8 @@ std::unique_ptr<TetMapBlender> prepareTetMapBlender(BlendMethod method, const Bl
     case BlendMethod::kDualQuaternion:
     case BlendMethod::kDib:
       return prepareDualQuaternionBlender(method, input);
+    case BlendMethod::kLieBodies:
+      return prepareLieBodiesBlender(input);
     case BlendMethod::kVertexLinear:
       throw InputError("vertex-linear blends vertex positions and has no per-tet maps");
     default:

@@ -1,0 +1,139 @@
+// Per-blend cost of the prepared shape blender at 10k, 100k and 1M tets with
+// three examples (a box bar twisted, bent, and twisted + bent), split into
+// the per-tet blend, the stitch right-hand side and the back-substitution,
+// against refactoring the stitch every time and against vertex-linear
+// blending, measured in the same run. Counters (milliseconds per blend):
+//   blend_ms, rhs_ms, solve_ms   parts of one prepared blend (mean)
+//   refactor_ms                  StitchSolver construction + solve, once
+//   vertex_linear_ms             one vertex-linear blend (mean of 20)
+//   x_refactor, x_vertex_linear  ratios to the prepared blend's time
+//   prepare_s                    ShapeBlender construction, once
+//   maxrss_B_per_tet             process peak RSS (ru_maxrss) / tets
+// Run: bench_blending [--benchmark_filter=...]
+
+#include <benchmark/benchmark.h>
+#include <sys/resource.h>
+
+#include <chrono>
+#include <cmath>
+#include <map>
+#include <memory>
+
+#include "tetblend/blending/shape_blender.h"
+#include "tetblend/meshing/procedural_shapes.h"
+
+namespace tetblend {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double secondsSince(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+double peakRssBytes() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return 1024.0 * static_cast<double>(usage.ru_maxrss);  // Linux: kilobytes
+}
+
+struct Model {
+  TetMesh rest;
+  std::vector<Vertices> examples;
+  std::unique_ptr<ShapeBlender> blender;
+  double prepareSeconds = 0.0;
+};
+
+// nx = ny = n, nz = 2.6 n cubes of 6 tets: 6 * 2.6 n^3 tets.
+Model& model(int n, BlendMethod method) {
+  static std::map<std::pair<int, BlendMethod>, std::unique_ptr<Model>> cache;
+  auto& slot = cache[{n, method}];
+  if (slot) return *slot;
+  cache.clear();  // keep one model alive at a time: the RSS counter measures one
+  auto m = std::make_unique<Model>();
+  const int nz = static_cast<int>(std::lround(2.6 * n));
+  const double length = 2.6;
+  m->rest = boxTetMesh(n, n, nz, Eigen::Vector3d(1.0, 1.0, length));
+  const Eigen::Vector3d base(0.0, 0.0, -length / 2);
+  const Vertices twisted =
+      twistAboutAxis(m->rest.vertices, base, Eigen::Vector3d::UnitZ(), M_PI, length);
+  m->examples.push_back(twisted);
+  m->examples.push_back(bendAboutAxis(m->rest.vertices, base, Eigen::Vector3d::UnitZ(),
+                                      Eigen::Vector3d::UnitX(), M_PI / 2, length));
+  m->examples.push_back(bendAboutAxis(twisted, base, Eigen::Vector3d::UnitZ(),
+                                      Eigen::Vector3d::UnitY(), M_PI / 3, length));
+  ShapeBlenderOptions options;
+  options.methods = {method, BlendMethod::kVertexLinear};
+  const auto start = Clock::now();
+  m->blender = std::make_unique<ShapeBlender>(m->rest, m->examples, options);
+  m->prepareSeconds = secondsSince(start);
+  auto& stored = cache[{n, method}];
+  stored = std::move(m);
+  return *stored;
+}
+
+void blendBenchmark(benchmark::State& state, BlendMethod method) {
+  const int n = static_cast<int>(state.range(0));
+  Model& m = model(n, method);
+  const double tets = static_cast<double>(m.rest.tets.rows());
+  BlendResult result;
+  double blend = 0.0, rhs = 0.0, solve = 0.0;
+  int count = 0;
+  for (auto _ : state) {
+    const double t = 0.1 + 0.8 * (count % 7) / 6.0;
+    m.blender->blendInto({t, 0.5 * (1.0 - t), 0.25}, method, result);
+    blend += result.timings.blendSeconds;
+    rhs += result.timings.rhsSeconds;
+    solve += result.timings.solveSeconds;
+    ++count;
+    benchmark::DoNotOptimize(result.vertices.data());
+  }
+  const double perBlend = (blend + rhs + solve) / count;
+  // Same run, outside the timed loop: vertex-linear and a refactored solve.
+  BlendResult linear;
+  const auto linearStart = Clock::now();
+  constexpr int kLinearRepeats = 20;
+  for (int i = 0; i < kLinearRepeats; ++i) {
+    m.blender->blendInto({0.3, 0.3, 0.3}, BlendMethod::kVertexLinear, linear);
+  }
+  const double vertexLinear = secondsSince(linearStart) / kLinearRepeats;
+  const auto refactorStart = Clock::now();
+  const StitchSolver fresh(m.rest);
+  const Vertices refactored =
+      fresh.solve(result.targets, m.blender->blendedCentroids({0.3, 0.3, 0.3}));
+  benchmark::DoNotOptimize(refactored.data());
+  const double refactor = secondsSince(refactorStart) + (blend + rhs) / count;
+  state.counters["tets"] = tets;
+  state.counters["blend_ms"] = 1e3 * blend / count;
+  state.counters["rhs_ms"] = 1e3 * rhs / count;
+  state.counters["solve_ms"] = 1e3 * solve / count;
+  state.counters["refactor_ms"] = 1e3 * refactor;
+  state.counters["vertex_linear_ms"] = 1e3 * vertexLinear;
+  state.counters["x_refactor"] = refactor / perBlend;
+  state.counters["x_vertex_linear"] = perBlend / vertexLinear;
+  state.counters["prepare_s"] = m.prepareSeconds;
+  state.counters["maxrss_B_per_tet"] = peakRssBytes() / tets;
+}
+
+// n = 9, 20, 40 give 11 178, 124 800 and 998 400 tets.
+BENCHMARK_CAPTURE(blendBenchmark, kaji, BlendMethod::kKaji)
+    ->Arg(9)
+    ->Arg(20)
+    ->Arg(40)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK_CAPTURE(blendBenchmark, dq, BlendMethod::kDualQuaternion)
+    ->Arg(9)
+    ->Arg(20)
+    ->Arg(40)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK_CAPTURE(blendBenchmark, linear, BlendMethod::kLinear)
+    ->Arg(9)
+    ->Arg(20)
+    ->Arg(40)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+
+}  // namespace
+}  // namespace tetblend
