@@ -1,0 +1,47 @@
+#pragma once
+// The JSON job list of `tetblend batch`:
+//   {
+//     "model": "bar.tbm",            model file, relative to the spec's folder
+//     "output_dir": "bar_batch",     default: <spec name without .json>_out
+//     "method": "kaji",              default method of the jobs (default kaji)
+//     "consistency": "on",           rotation consistency, on|off (default on)
+//     "nonlinear": false,            nonlinear stitch (default false)
+//     "surface_formats": ["obj"],    extra surface files (default none)
+//     "threads": 0,                  job workers, 0 = all cores (default 0)
+//     "jobs": [ {"name": "half", "weights": [0.5, 0], "method": "dq"}, ... ]
+//   }
+// A job's "name" (letters, digits, '-', '_', '.'; unique) names its output
+// files <output_dir>/<name>.vtu and .vtp; "method" overrides the default.
+
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+namespace tetblend::cli {
+
+/// One job as written in the spec. Its fields are checked when it runs, so a
+/// bad job fails alone; only its name is checked when the spec is read.
+struct BatchJob {
+  std::string name;
+  nlohmann::json weights;  ///< as written; must be an array of numbers
+  std::string method;      ///< resolved: the job's or the spec's default
+};
+
+/// A read batch spec with every path resolved against the spec's folder.
+struct BatchSpec {
+  std::string specPath;
+  std::string modelPath;
+  std::string outputDir;
+  std::string consistency = "on";
+  bool nonlinear = false;
+  std::vector<std::string> surfaceFormats;
+  int threads = 0;
+  std::vector<BatchJob> jobs;
+};
+
+/// Reads `path`. InputError (naming the file and the entry) for unreadable
+/// JSON, a missing model or jobs entry, a job without a valid name, or two
+/// jobs with one name.
+BatchSpec readBatchSpec(const std::string& path);
+
+}  // namespace tetblend::cli

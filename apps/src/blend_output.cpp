@@ -1,0 +1,66 @@
+#include "blend_output.h"
+
+#include "cli_common.h"
+#include "tetblend/core/error.h"
+#include "tetblend/meshing/surface_io.h"
+#include "tetblend/meshing/tet_mesh_io.h"
+
+namespace tetblend::cli {
+
+namespace {
+
+NamedArray displacementArray(const Vertices& positions, const Vertices& rest, Eigen::Index rows) {
+  NamedArray a{"displacement", 3, {}};
+  a.values.reserve(static_cast<std::size_t>(rows) * 3);
+  for (Eigen::Index i = 0; i < rows; ++i)
+    for (int c = 0; c < 3; ++c) a.values.push_back(positions(i, c) - rest(i, c));
+  return a;
+}
+
+}  // namespace
+
+std::vector<std::string> parseSurfaceFormats(const std::vector<std::string>& formats) {
+  std::vector<std::string> out;
+  for (const std::string& f : formats) {
+    if (f == "vtp") continue;
+    if (f != "obj" && f != "ply" && f != "off") {
+      throw InputError("--surface-format: unknown format '" + f + "'; use obj, ply or off");
+    }
+    out.push_back(f);
+  }
+  return out;
+}
+
+std::vector<std::string> blendOutputFiles(const std::string& vtuPath,
+                                          const std::vector<std::string>& surfaceFormats) {
+  std::vector<std::string> files{vtuPath, withExtension(vtuPath, ".vtp")};
+  for (const std::string& f : surfaceFormats) files.push_back(withExtension(vtuPath, "." + f));
+  return files;
+}
+
+void writeBlendResult(const std::string& vtuPath, const ModelData& model, const Vertices& positions,
+                      const std::vector<NamedArray>& cellData,
+                      const std::vector<std::string>& surfaceFormats) {
+  if (extensionOf(vtuPath) != ".vtu") {
+    throw InputError(vtuPath + ": the output must be a .vtu file (the surface goes beside it)");
+  }
+  if (positions.rows() != model.rest.vertices.rows()) {
+    throw InputError(vtuPath + ": " + std::to_string(positions.rows()) +
+                     " blended vertices for a model of " +
+                     std::to_string(model.rest.vertices.rows()));
+  }
+  MeshDataArrays tetData;
+  tetData.pointData.push_back(displacementArray(positions, model.rest.vertices, positions.rows()));
+  tetData.cellData = cellData;
+  writeTetMesh(vtuPath, TetMesh{positions, model.rest.tets}, tetData);
+
+  const Eigen::Index ns = model.surfaceVertexCount;
+  const SurfaceMesh surface{positions.topRows(ns), model.surfaceTriangles};
+  MeshDataArrays surfaceData;
+  surfaceData.pointData.push_back(displacementArray(positions, model.rest.vertices, ns));
+  writeSurface(withExtension(vtuPath, ".vtp"), surface, surfaceData);
+  for (const std::string& f : surfaceFormats)
+    writeSurface(withExtension(vtuPath, "." + f), surface);
+}
+
+}  // namespace tetblend::cli

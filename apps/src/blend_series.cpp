@@ -1,0 +1,55 @@
+#include "blend_series.h"
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "blend_output.h"
+#include "blended_shape.h"
+#include "cli_common.h"
+#include "progress.h"
+#include "tetblend/core/error.h"
+#include "tetblend/meshing/atomic_file.h"
+#include "tetblend/meshing/pvd_collection.h"
+
+namespace tetblend::cli {
+
+namespace fs = std::filesystem;
+
+void blendSeries(const ModelData& model, const BlendSettings& settings,
+                 const std::vector<SeriesItem>& items, const std::string& dir,
+                 const std::string& collection, bool quiet) {
+  if (items.empty()) throw InputError("nothing to blend: the series is empty");
+  const BlendMethod method = parseMethod(settings.method);
+  const std::vector<std::string> formats = parseSurfaceFormats(settings.surfaceFormats);
+  for (const SeriesItem& item : items)
+    requireWeightCount(item.weights, model.examples.size(), "weights of " + item.name);
+  ensureDirectory(dir);
+  const ShapeBlender blender = makeBlender(
+      model, {method}, parseOnOff(settings.consistency, "--consistency"), settings.nonlinear);
+  ProgressBar progress("blend", items.size(), quiet);
+  std::vector<PvdDataSet> sets;
+  std::ostringstream csv;
+  csv << "name,time";
+  for (std::size_t k = 0; k < model.examples.size(); ++k) csv << ",w" << k + 1;
+  csv << "\n";
+  for (const SeriesItem& item : items) {
+    const BlendedShape shape = blendShape(blender, item.weights, method);
+    writeBlendResult((fs::path(dir) / (item.name + ".vtu")).string(), model, shape.vertices,
+                     shape.cellData, formats);
+    sets.push_back({item.time, item.name + ".vtu", 0});
+    csv << item.name << "," << formatNumber(item.time);
+    for (double w : item.weights) csv << "," << formatNumber(w);
+    csv << "\n";
+    progress.advance();
+  }
+  writePvdCollection((fs::path(dir) / (collection + ".pvd")).string(), sets);
+  const std::string csvPath = (fs::path(dir) / "weights.csv").string();
+  writeFileAtomically(csvPath, [&](const std::string& temp) {
+    std::ofstream out(temp);
+    out << csv.str();
+    if (!out.flush()) throw InputError(csvPath + ": cannot write");
+  });
+}
+
+}  // namespace tetblend::cli

@@ -1,0 +1,42 @@
+#include "blend_setup.h"
+
+#include "tetblend/core/error.h"
+
+namespace tetblend::cli {
+
+void addBlendOptions(CLI::App& command, BlendSettings& settings) {
+  std::string names;
+  for (BlendMethod m : allBlendMethods()) names += (names.empty() ? "" : ", ") + blendMethodName(m);
+  command.add_option("--method", settings.method, "blend method: " + names)->capture_default_str();
+  command
+      .add_option("--consistency", settings.consistency,
+                  "consistent rotation logarithms across neighbouring tets (Kaji-Ochiai Alg. 1; "
+                  "kaji, kaji-frechet, liebodies): on or off")
+      ->check(CLI::IsMember({"on", "off"}))
+      ->capture_default_str();
+  command.add_flag("--nonlinear", settings.nonlinear,
+                   "when the linear stitch leaves inverted tets, run the nonlinear stitch (Ceres) "
+                   "that removes them (default: off)");
+  command.add_option("--surface-format", settings.surfaceFormats,
+                     "also write the surface as obj, ply and/or off beside the .vtp (repeatable; "
+                     "default: .vtp only)");
+}
+
+BlendMethod parseMethod(const std::string& name) { return blendMethodFromName(name); }
+
+bool parseOnOff(const std::string& value, const std::string& what) {
+  if (value == "on") return true;
+  if (value == "off") return false;
+  throw InputError(what + ": '" + value + "' is neither on nor off");
+}
+
+ShapeBlender makeBlender(const ModelData& model, const std::vector<BlendMethod>& methods,
+                         bool rotationConsistency, bool nonlinearStitch) {
+  ShapeBlenderOptions options;
+  options.methods = methods;
+  options.rotationConsistency = rotationConsistency;
+  options.nonlinearStitch = nonlinearStitch;
+  return ShapeBlender(model.rest, model.examples, options);
+}
+
+}  // namespace tetblend::cli

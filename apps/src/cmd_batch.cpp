@@ -1,0 +1,295 @@
+// tetblend batch: many blends of one model from a JSON spec (batch_spec.h),
+// in parallel, with a summary table and a .pvd of the results.
+//
+// Resume rule: the summary (<output_dir>/summary.json) is the done-marker. A
+// job is skipped when the previous summary lists it as "done" with the same
+// fingerprint (FNV-1a 64 of the model file's bytes, the job's method,
+// weights, consistency, nonlinear and surface formats) and all its output
+// files still exist. Editing a job, or re-preparing the model, reruns it.
+//
+// Concurrency: the blender's stitch keeps one workspace, so the blends
+// themselves take turns (each is parallel over tets inside); the quality
+// figures and the compressed output files of different jobs are made
+// concurrently by the job workers.
+
+#include <atomic>
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <sstream>
+#include <thread>
+
+#include "batch_spec.h"
+#include "blend_output.h"
+#include "blend_setup.h"
+#include "blended_shape.h"
+#include "cli_common.h"
+#include "commands.h"
+#include "progress.h"
+#include "tetblend/core/error.h"
+#include "tetblend/meshing/atomic_file.h"
+#include "tetblend/meshing/pvd_collection.h"
+
+namespace tetblend::cli {
+
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+struct BatchArgs {
+  std::string spec;
+  int threads = -1;  // -1: take the spec's value
+  bool quiet = false;
+};
+
+struct JobOutcome {
+  bool done = false;
+  bool skipped = false;
+  std::string error;
+  std::vector<std::string> files;
+  QualitySummary quality;
+  json previousQuality;  // for skipped jobs
+  double seconds = 0.0;
+};
+
+std::string hex64(std::uint64_t v) {
+  std::ostringstream s;
+  s << std::hex << v;
+  return s.str();
+}
+
+std::uint64_t fileHash(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  const std::vector<unsigned char> bytes((std::istreambuf_iterator<char>(in)),
+                                         std::istreambuf_iterator<char>());
+  return fnv1a64(bytes.data(), bytes.size());
+}
+
+std::string fingerprint(const BatchSpec& spec, const BatchJob& job, std::uint64_t modelHash) {
+  std::string key = "model=" + hex64(modelHash) + ";method=" + job.method +
+                    ";weights=" + job.weights.dump() + ";consistency=" + spec.consistency +
+                    ";nonlinear=" + (spec.nonlinear ? "1" : "0") + ";formats=";
+  for (const std::string& f : spec.surfaceFormats) key += f + ",";
+  return hex64(fnv1a64(reinterpret_cast<const unsigned char*>(key.data()), key.size()));
+}
+
+json readPreviousSummary(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) return json::object();
+  try {
+    return json::parse(in);
+  } catch (const json::exception&) {
+    return json::object();  // a foreign or damaged summary marks nothing done
+  }
+}
+
+std::vector<double> jobWeights(const BatchJob& job, std::size_t exampleCount) {
+  if (!job.weights.is_array()) throw InputError("\"weights\" must be an array of numbers");
+  std::vector<double> w;
+  for (const json& x : job.weights) {
+    if (!x.is_number()) throw InputError("\"weights\" must be an array of numbers");
+    w.push_back(x.get<double>());
+  }
+  requireWeightCount(w, exampleCount, "\"weights\"");
+  return w;
+}
+
+void writeText(const std::string& path, const std::string& text) {
+  writeFileAtomically(path, [&](const std::string& temp) {
+    std::ofstream out(temp);
+    out << text;
+    if (!out.flush()) throw InputError(path + ": cannot write");
+  });
+}
+
+void writeSummaries(const BatchSpec& spec, const std::vector<std::string>& fingerprints,
+                    const std::vector<JobOutcome>& outcomes) {
+  json summary{{"spec", spec.specPath}, {"model", spec.modelPath}, {"jobs", json::array()}};
+  std::ostringstream csv;
+  csv << "name,method,status,weights";
+  for (const auto& c : qualityColumns(QualitySummary{})) csv << "," << c.first;
+  csv << ",seconds,error\n";
+  for (std::size_t i = 0; i < spec.jobs.size(); ++i) {
+    const BatchJob& job = spec.jobs[i];
+    const JobOutcome& o = outcomes[i];
+    json entry{{"name", job.name},
+               {"method", job.method},
+               {"weights", job.weights},
+               {"status", o.done ? "done" : "failed"},
+               {"fingerprint", fingerprints[i]},
+               {"skipped_this_run", o.skipped},
+               {"files", o.files},
+               {"seconds", o.seconds}};
+    json quality = o.previousQuality;
+    if (o.done && !o.skipped) {
+      quality = json::object();
+      for (const auto& c : qualityColumns(o.quality)) quality[c.first] = c.second;
+    }
+    if (o.done) entry["quality"] = quality;
+    if (!o.done) entry["error"] = o.error;
+    summary["jobs"].push_back(entry);
+
+    std::string weights;
+    if (job.weights.is_array())
+      for (const json& x : job.weights) weights += (weights.empty() ? "" : " ") + x.dump();
+    csv << job.name << "," << job.method << "," << (o.done ? "done" : "failed") << "," << weights;
+    for (const auto& c : qualityColumns(QualitySummary{})) {
+      csv << ",";
+      if (o.done && quality.contains(c.first)) csv << formatNumber(quality[c.first].get<double>());
+    }
+    std::string error = o.error;
+    for (char& ch : error)
+      if (ch == ',' || ch == '\n' || ch == '"') ch = ';';
+    csv << "," << formatNumber(o.seconds) << "," << error << "\n";
+  }
+  writeText((fs::path(spec.outputDir) / "summary.json").string(), summary.dump(2) + "\n");
+  writeText((fs::path(spec.outputDir) / "summary.csv").string(), csv.str());
+}
+
+void runBatch(const BatchArgs& a) {
+  const BatchSpec spec = readBatchSpec(a.spec);
+  const std::vector<std::string> formats = parseSurfaceFormats(spec.surfaceFormats);
+  const bool consistency = parseOnOff(spec.consistency, a.spec + ": \"consistency\"");
+  const ModelData model = readModelFile(spec.modelPath);
+  const std::uint64_t modelHash = fileHash(spec.modelPath);
+  ensureDirectory(spec.outputDir);
+  const std::string summaryPath = (fs::path(spec.outputDir) / "summary.json").string();
+  const json previous = readPreviousSummary(summaryPath);
+
+  const std::size_t n = spec.jobs.size();
+  std::vector<std::string> fingerprints(n);
+  std::vector<JobOutcome> outcomes(n);
+  std::vector<std::size_t> todo;
+  for (std::size_t i = 0; i < n; ++i) {
+    const BatchJob& job = spec.jobs[i];
+    fingerprints[i] = fingerprint(spec, job, modelHash);
+    const std::string vtu = (fs::path(spec.outputDir) / (job.name + ".vtu")).string();
+    outcomes[i].files = blendOutputFiles(vtu, formats);
+    bool skip = false;
+    if (previous.contains("jobs") && previous["jobs"].is_array()) {
+      for (const json& e : previous["jobs"]) {
+        if (e.value("name", "") == job.name && e.value("status", "") == "done" &&
+            e.value("fingerprint", "") == fingerprints[i]) {
+          skip = true;
+          for (const std::string& f : outcomes[i].files) skip = skip && fs::exists(f);
+          if (skip) outcomes[i].previousQuality = e.value("quality", json::object());
+        }
+      }
+    }
+    if (skip) {
+      outcomes[i].done = outcomes[i].skipped = true;
+    } else {
+      todo.push_back(i);
+    }
+  }
+
+  if (!todo.empty()) {
+    std::map<std::string, std::string> methodError;  // method name -> why it cannot run
+    std::vector<BlendMethod> methods;
+    for (std::size_t i : todo) {
+      const std::string& name = spec.jobs[i].method;
+      if (methodError.count(name)) continue;
+      try {
+        const BlendMethod m = parseMethod(name);
+        methodError[name] = "";
+        if (std::find(methods.begin(), methods.end(), m) == methods.end()) methods.push_back(m);
+      } catch (const Error& e) {
+        methodError[name] = e.what();
+      }
+    }
+    const ThreadLimit limit(a.threads >= 0 ? a.threads : spec.threads);
+    std::unique_ptr<ShapeBlender> blender;
+    for (BlendMethod m : methods) {
+      try {
+        if (!blender) {
+          blender =
+              std::make_unique<ShapeBlender>(makeBlender(model, {m}, consistency, spec.nonlinear));
+        } else {
+          blender->prepare(m);
+        }
+      } catch (const DomainError& e) {
+        methodError[blendMethodName(m)] = e.what();
+      }
+    }
+
+    ProgressBar progress("batch", todo.size(), a.quiet);
+    std::mutex blendMutex;
+    std::atomic<std::size_t> next{0};
+    const auto worker = [&] {
+      for (std::size_t t = next++; t < todo.size(); t = next++) {
+        const std::size_t i = todo[t];
+        const BatchJob& job = spec.jobs[i];
+        JobOutcome& o = outcomes[i];
+        const auto start = std::chrono::steady_clock::now();
+        try {
+          const std::vector<double> weights = jobWeights(job, model.examples.size());
+          if (!methodError.at(job.method).empty()) throw InputError(methodError.at(job.method));
+          BlendedShape shape;
+          {
+            std::lock_guard<std::mutex> lock(blendMutex);
+            shape = blendShape(*blender, weights, parseMethod(job.method));
+          }
+          writeBlendResult(o.files.front(), model, shape.vertices, shape.cellData, formats);
+          o.quality = shape.quality;
+          o.done = true;
+        } catch (const std::exception& e) {
+          o.error = e.what();
+        }
+        o.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        progress.advance();
+      }
+    };
+    const int workers = std::min<int>(resolveThreads(a.threads >= 0 ? a.threads : spec.threads),
+                                      static_cast<int>(todo.size()));
+    std::vector<std::thread> pool;
+    for (int w = 1; w < workers; ++w) pool.emplace_back(worker);
+    worker();
+    for (std::thread& t : pool) t.join();
+  }
+
+  writeSummaries(spec, fingerprints, outcomes);
+  std::vector<PvdDataSet> sets;
+  int failed = 0;
+  std::string firstError;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (outcomes[i].done) {
+      sets.push_back({static_cast<double>(i), spec.jobs[i].name + ".vtu", 0});
+    } else if (failed++ == 0) {
+      firstError = "job '" + spec.jobs[i].name + "': " + outcomes[i].error;
+    }
+  }
+  if (!sets.empty()) writePvdCollection((fs::path(spec.outputDir) / "batch.pvd").string(), sets);
+  if (failed > 0) {
+    throw InputError("batch: " + std::to_string(failed) + " of " + std::to_string(n) +
+                     " jobs failed (first: " + firstError + "); see " + summaryPath);
+  }
+}
+
+}  // namespace
+
+void registerBatch(CLI::App& root) {
+  auto args = std::make_shared<BatchArgs>();
+  CLI::App* cmd = root.add_subcommand(
+      "batch",
+      "Run the blend jobs of a JSON spec over one model, in parallel. Writes <output_dir>/<job>"
+      ".vtu and .vtp per job, batch.pvd (all finished jobs, time = job index), summary.json and "
+      "summary.csv (quality figures per job). A failing job is reported and the others go on; "
+      "the exit code is non-zero if any failed. Re-running skips jobs that summary.json marks "
+      "done with the same fingerprint (model bytes, method, weights, options) whose files exist. "
+      "Spec: {\"model\", \"output_dir\" (default <spec>_out), \"method\" (default kaji), "
+      "\"consistency\" (on), \"nonlinear\" (false), \"surface_formats\" ([]), \"threads\" (0), "
+      "\"jobs\": [{\"name\", \"weights\": [..], \"method\"}]}; paths relative to the spec.");
+  cmd->add_option("SPEC", args->spec, "batch spec (.json)")->required();
+  cmd->add_option("--threads", args->threads,
+                  "job workers and TBB threads; 0 = all cores; default: the spec's \"threads\"")
+      ->check(CLI::Range(0, 1 << 16));
+  addQuietOption(*cmd, args->quiet);
+  cmd->callback([args] { runBatch(*args); });
+}
+
+}  // namespace tetblend::cli

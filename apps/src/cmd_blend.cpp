@@ -1,0 +1,80 @@
+// tetblend blend: one blended shape from a model (or straight from surface
+// files) at one weight vector.
+
+#include <memory>
+
+#include "blend_output.h"
+#include "blend_setup.h"
+#include "blended_shape.h"
+#include "cli_common.h"
+#include "commands.h"
+#include "prepare_pipeline.h"
+#include "progress.h"
+#include "tetblend/core/error.h"
+
+namespace tetblend::cli {
+
+namespace {
+
+struct BlendArgs {
+  std::string model;
+  std::string rest;
+  std::vector<std::string> examples;
+  std::string weights;
+  std::string output;
+  BlendSettings blend;
+  PrepareSettings prepare;
+};
+
+void runBlend(const BlendArgs& a) {
+  const bool fromModel = !a.model.empty();
+  if (fromModel == !a.rest.empty()) {
+    throw InputError("give either a MODEL file or --rest with --example files, not both");
+  }
+  if (!fromModel && a.examples.empty()) throw InputError("--rest needs at least one --example");
+  if (extensionOf(a.output) != ".vtu") {
+    throw InputError("-o " + a.output + ": the output must be a .vtu file");
+  }
+  const std::vector<double> weights = parseWeights(a.weights, "--weights");
+  const BlendMethod method = parseMethod(a.blend.method);
+  const std::vector<std::string> formats = parseSurfaceFormats(a.blend.surfaceFormats);
+  const ThreadLimit limit(a.prepare.threads);
+
+  const ModelData model =
+      fromModel ? readModelFile(a.model) : prepareModel(a.rest, a.examples, a.prepare);
+  requireWeightCount(weights, model.examples.size(), "--weights");
+  ProgressBar progress("blend", 3, a.prepare.quiet);
+  const ShapeBlender blender = makeBlender(
+      model, {method}, parseOnOff(a.blend.consistency, "--consistency"), a.blend.nonlinear);
+  progress.advance();
+  const BlendedShape shape = blendShape(blender, weights, method);
+  progress.advance();
+  writeBlendResult(a.output, model, shape.vertices, shape.cellData, formats);
+  progress.advance();
+}
+
+}  // namespace
+
+void registerBlend(CLI::App& root) {
+  auto args = std::make_shared<BlendArgs>();
+  CLI::App* cmd = root.add_subcommand(
+      "blend",
+      "Blend the examples at one weight vector. Writes the tets to OUT.vtu (point data "
+      "'displacement' from the rest; cell data: per-tet quality) and the surface, in the rest "
+      "surface's vertex order, to OUT.vtp beside it. Weights: one per example, any reals; the "
+      "rest has weight 1 - sum(w), so all zeros give the rest and a unit vector an example.");
+  cmd->add_option("MODEL", args->model, "model file made by 'tetblend prepare'");
+  cmd->add_option("--rest", args->rest, "rest surface (instead of MODEL; prepared on the fly)");
+  cmd->add_option("--example", args->examples,
+                  "example surface with the rest's triangles (repeat for each example)");
+  cmd->add_option("-w,--weights", args->weights, "comma-separated weights, one per example")
+      ->required();
+  cmd->add_option("-o,--output", args->output, "output .vtu file (the .vtp goes beside it)")
+      ->required();
+  addBlendOptions(*cmd, args->blend);
+  addPrepareOptions(*cmd, args->prepare);
+  addQuietOption(*cmd, args->prepare.quiet);
+  cmd->callback([args] { runBlend(*args); });
+}
+
+}  // namespace tetblend::cli

@@ -1,0 +1,83 @@
+#include "prepare_pipeline.h"
+
+#include "cli_common.h"
+#include "progress.h"
+#include "tetblend/core/error.h"
+#include "tetblend/meshing/compatible_tets.h"
+#include "tetblend/meshing/surface_io.h"
+#include "tetblend/meshing/surface_validation.h"
+#include "tetblend/meshing/tetgen_mesher.h"
+#include "tetblend/meshing/tetrisation.h"
+
+namespace tetblend::cli {
+
+void addPrepareOptions(CLI::App& command, PrepareSettings& settings) {
+  command
+      .add_option("--quality", settings.radiusEdgeRatio,
+                  "TetGen quality bound: max circumradius / shortest edge of a tet (> 1; 0 = no "
+                  "refinement)")
+      ->capture_default_str();
+  command
+      .add_option("--max-volume", settings.maxVolume,
+                  "TetGen volume bound per tet, in mesh units cubed (0 = none)")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
+  command.add_flag("--tetrise", settings.tetrise,
+                   "one tet per surface triangle (apex along the normal) instead of TetGen: for "
+                   "open or non-watertight surfaces (default: off)");
+  addThreadsOption(command, settings.threads);
+}
+
+ModelData prepareModel(const std::string& restPath, const std::vector<std::string>& examplePaths,
+                       const PrepareSettings& settings) {
+  if (examplePaths.empty()) throw InputError("give at least one example surface");
+  if (settings.radiusEdgeRatio != 0.0 && !(settings.radiusEdgeRatio > 1.0)) {
+    throw InputError("--quality must be 0 or greater than 1, got " +
+                     formatNumber(settings.radiusEdgeRatio));
+  }
+  ProgressBar progress("prepare", examplePaths.size() + 2, settings.quiet);
+  const SurfaceMesh rest = readSurface(restPath);
+  SurfaceValidationOptions validation;
+  validation.requireClosed = !settings.tetrise;
+  requireValidRest(rest, restPath, validation);
+  std::vector<SurfaceMesh> examples;
+  for (const std::string& path : examplePaths) {
+    examples.push_back(readSurface(path));
+    requireCompatibleExample(rest, examples.back(), path);
+  }
+  progress.advance();
+
+  ModelData model;
+  model.surfaceTriangles = rest.triangles;
+  model.surfaceVertexCount = static_cast<int>(rest.vertices.rows());
+  model.restSource = restPath;
+  model.exampleSources = examplePaths;
+  if (settings.tetrise) {
+    std::vector<TetMesh> meshes = tetriseCompatible(rest, examples, examplePaths);
+    model.rest = std::move(meshes.front());
+    for (std::size_t k = 1; k < meshes.size(); ++k) model.examples.push_back(meshes[k].vertices);
+    progress.advance(examplePaths.size() + 1);
+    return model;
+  }
+  TetGenOptions tetgen;
+  tetgen.maxRadiusEdgeRatio = settings.radiusEdgeRatio;
+  tetgen.maxTetVolume = settings.maxVolume;
+  model.rest = tetrahedralize(rest, tetgen);
+  progress.advance();
+  const CompatibleTetBuilder builder(model.rest, model.surfaceVertexCount);
+  for (std::size_t k = 0; k < examples.size(); ++k) {
+    CompatibleTetResult placed = builder.place(examples[k].vertices);
+    if (!placed.invertedTets.empty()) {
+      throw InputError(examplePaths[k] + ": " + std::to_string(placed.invertedTets.size()) +
+                       " tets stay inverted after placing the interior vertices (first: tet " +
+                       std::to_string(placed.invertedTets.front()) + ", signed volume " +
+                       formatNumber(placed.invertedVolumes.front()) +
+                       "); try a finer rest mesh (--max-volume) or --tetrise");
+    }
+    model.examples.push_back(std::move(placed.vertices));
+    progress.advance();
+  }
+  return model;
+}
+
+}  // namespace tetblend::cli

@@ -1,0 +1,106 @@
+// tetblend batch: jobs in parallel, a failing job reported while the others
+// are written, resume skipping finished jobs, summary and collection files.
+
+#include <nlohmann/json.hpp>
+#include <thread>
+
+#include "apps_test_support.h"
+
+namespace tetblend::apps_test {
+namespace {
+
+using nlohmann::json;
+constexpr double kInterpolationTolerance = 1e-7 * 4.1;  // as in blend_test.cpp
+
+class BatchCommand : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = scratchDir();
+    model_ = prepareBar(dir_);
+  }
+  fs::path writeSpec(const json& jobs) const {
+    const json spec{{"model", "bar.tbm"}, {"output_dir", "out"}, {"threads", 2}, {"jobs", jobs}};
+    std::ofstream(dir_ / "spec.json") << spec.dump(2);
+    return dir_ / "spec.json";
+  }
+  json summary() const { return json::parse(slurp(dir_ / "out" / "summary.json")); }
+  fs::path dir_;
+  fs::path model_;
+};
+
+TEST_F(BatchCommand, FailingJobIsReportedAndTheOthersAreWritten) {
+  const fs::path spec = writeSpec(
+      json::array({{{"name", "rest"}, {"weights", {0, 0}}},
+                   {{"name", "bad"}, {"weights", {0.5}}},
+                   {{"name", "bend"}, {"weights", {0, 1}}, {"method", "dq"}},
+                   {{"name", "unknown"}, {"weights", {0, 1}}, {"method", "no-such-method"}}}));
+  const RunResult r = tetblend({"batch", spec.string()}, dir_);
+  expectOneLineError(r);
+  EXPECT_NE(r.err.find("2 of 4 jobs failed"), std::string::npos) << r.err;
+  EXPECT_LT(maxDistance(pointsOf(readVtp(dir_ / "out" / "rest.vtp")),
+                        readSurface((dir_ / "bar_rest.obj").string()).vertices),
+            kInterpolationTolerance);
+  EXPECT_LT(maxDistance(pointsOf(readVtp(dir_ / "out" / "bend.vtp")),
+                        readSurface((dir_ / "bar_bend.obj").string()).vertices),
+            kInterpolationTolerance);
+  EXPECT_FALSE(fs::exists(dir_ / "out" / "bad.vtu"));
+  EXPECT_FALSE(fs::exists(dir_ / "out" / "unknown.vtu"));
+  const json s = summary();
+  ASSERT_EQ(s["jobs"].size(), 4u);
+  EXPECT_EQ(s["jobs"][0]["status"], "done");
+  EXPECT_EQ(s["jobs"][1]["status"], "failed");
+  EXPECT_NE(s["jobs"][1]["error"].get<std::string>().find("weights"), std::string::npos);
+  EXPECT_EQ(s["jobs"][3]["status"], "failed");
+  EXPECT_DOUBLE_EQ(s["jobs"][0]["quality"]["inverted_tets"].get<double>(), 0.0);
+  EXPECT_NEAR(s["jobs"][0]["quality"]["min_volume_ratio"].get<double>(), 1.0, 1e-6);
+  const std::string csv = slurp(dir_ / "out" / "summary.csv");
+  EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 5);  // header + 4 jobs
+  const std::string pvd = slurp(dir_ / "out" / "batch.pvd");
+  EXPECT_NE(pvd.find("rest.vtu"), std::string::npos);
+  EXPECT_NE(pvd.find("bend.vtu"), std::string::npos);
+  EXPECT_EQ(pvd.find("bad.vtu"), std::string::npos);
+}
+
+TEST_F(BatchCommand, SecondRunSkipsFinishedJobsAndRerunsEditedOnes) {
+  json jobs = json::array(
+      {{{"name", "a"}, {"weights", {0.25, 0}}}, {{"name", "b"}, {"weights", {0, 0.75}}}});
+  fs::path spec = writeSpec(jobs);
+  ASSERT_EQ(tetblend({"batch", spec.string()}, dir_).code, 0);
+  const auto timeA = fs::last_write_time(dir_ / "out" / "a.vtu");
+  const auto timeB = fs::last_write_time(dir_ / "out" / "b.vtu");
+  std::this_thread::sleep_for(std::chrono::milliseconds(20));
+
+  ASSERT_EQ(tetblend({"batch", spec.string()}, dir_).code, 0);
+  json s = summary();
+  EXPECT_TRUE(s["jobs"][0]["skipped_this_run"].get<bool>());
+  EXPECT_TRUE(s["jobs"][1]["skipped_this_run"].get<bool>());
+  EXPECT_EQ(fs::last_write_time(dir_ / "out" / "a.vtu"), timeA);
+  EXPECT_TRUE(s["jobs"][0].contains("quality"));  // carried over from the first run
+
+  jobs[1]["weights"] = {0, 0.5};
+  spec = writeSpec(jobs);
+  ASSERT_EQ(tetblend({"batch", spec.string()}, dir_).code, 0);
+  s = summary();
+  EXPECT_TRUE(s["jobs"][0]["skipped_this_run"].get<bool>());
+  EXPECT_FALSE(s["jobs"][1]["skipped_this_run"].get<bool>());
+  EXPECT_NE(fs::last_write_time(dir_ / "out" / "b.vtu"), timeB);
+
+  fs::remove(dir_ / "out" / "a.vtp");  // a missing output reruns its job
+  ASSERT_EQ(tetblend({"batch", spec.string()}, dir_).code, 0);
+  EXPECT_FALSE(summary()["jobs"][0]["skipped_this_run"].get<bool>());
+  EXPECT_TRUE(fs::exists(dir_ / "out" / "a.vtp"));
+}
+
+TEST_F(BatchCommand, BadSpecIsOneLineError) {
+  std::ofstream(dir_ / "broken.json") << "{ \"model\": ";
+  expectOneLineError(tetblend({"batch", (dir_ / "broken.json").string()}, dir_));
+  const fs::path spec = writeSpec(
+      json::array({{{"name", "x"}, {"weights", {0, 0}}}, {{"name", "x"}, {"weights", {0, 1}}}}));
+  const RunResult r = tetblend({"batch", spec.string()}, dir_);
+  expectOneLineError(r);
+  EXPECT_NE(r.err.find("earlier job"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(dir_ / "out"));
+}
+
+}  // namespace
+}  // namespace tetblend::apps_test

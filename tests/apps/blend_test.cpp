@@ -1,0 +1,100 @@
+// End to end: prepare the bar samples, blend at the rest, at each example and
+// straight from surface files; outputs read back with VTK's readers.
+
+#include "apps_test_support.h"
+
+namespace tetblend::apps_test {
+namespace {
+
+// Interpolation holds to round-off of the stitch solve (a sparse Cholesky of a
+// Laplacian with condition ~1e4 on this mesh): 1e-7 of the bar's size (the
+// bounding-box diagonal is ~4.1) leaves two orders of margin.
+constexpr double kInterpolationTolerance = 1e-7 * 4.1;
+
+class BlendCommand : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = scratchDir();
+    model_ = prepareBar(dir_);
+  }
+  SurfaceMesh sample(const std::string& name) const { return readSurface((dir_ / name).string()); }
+  fs::path dir_;
+  fs::path model_;
+};
+
+TEST_F(BlendCommand, ZeroWeightsGiveTheRestWithQualityArrays) {
+  const RunResult r = tetblend(
+      {"blend", model_.string(), "--weights", "0,0", "-o", (dir_ / "b.vtu").string()}, dir_);
+  ASSERT_EQ(r.code, 0) << r.err;
+  const SurfaceMesh rest = sample("bar_rest.obj");
+  const auto vtp = readVtp(dir_ / "b.vtp");
+  EXPECT_LT(maxDistance(pointsOf(vtp), rest.vertices), kInterpolationTolerance);
+  EXPECT_EQ(vtp->GetNumberOfPolys(), rest.triangles.rows());
+
+  const auto vtu = readVtu(dir_ / "b.vtu");
+  ASSERT_GT(vtu->GetNumberOfCells(), 0);
+  EXPECT_GE(vtu->GetNumberOfPoints(), rest.vertices.rows());
+  EXPECT_LT(maxDistance(pointsOf(vtu).topRows(rest.vertices.rows()), rest.vertices),
+            kInterpolationTolerance);
+  vtkDataArray* displacement = vtu->GetPointData()->GetArray("displacement");
+  ASSERT_NE(displacement, nullptr);
+  EXPECT_EQ(displacement->GetNumberOfComponents(), 3);
+  for (const char* name : {"volume_ratio", "inverted", "target_residual"}) {
+    vtkDataArray* a = vtu->GetCellData()->GetArray(name);
+    ASSERT_NE(a, nullptr) << name;
+    EXPECT_EQ(a->GetNumberOfTuples(), vtu->GetNumberOfCells()) << name;
+  }
+  vtkDataArray* ratio = vtu->GetCellData()->GetArray("volume_ratio");
+  for (vtkIdType j = 0; j < ratio->GetNumberOfTuples(); ++j) {
+    ASSERT_NEAR(ratio->GetTuple1(j), 1.0, 1e-6) << "tet " << j;  // the rest keeps volumes
+  }
+  for (vtkIdType i = 0; i < displacement->GetNumberOfTuples(); ++i)
+    for (int c = 0; c < 3; ++c)
+      ASSERT_NEAR(displacement->GetComponent(i, c), 0.0, kInterpolationTolerance);
+}
+
+TEST_F(BlendCommand, UnitWeightsGiveEachExampleForEveryMapMethod) {
+  for (const std::string method : {"kaji", "dq", "linear", "vertex-linear"}) {
+    SCOPED_TRACE(method);
+    const fs::path twist = dir_ / (method + "_twist.vtu"), bend = dir_ / (method + "_bend.vtu");
+    ASSERT_EQ(
+        tetblend({"blend", model_.string(), "-w", "1,0", "--method", method, "-o", twist.string()},
+                 dir_)
+            .code,
+        0);
+    ASSERT_EQ(tetblend({"blend", model_.string(), "-w", "0,1", "--method", method, "-o",
+                        bend.string(), "--surface-format", "obj"},
+                       dir_)
+                  .code,
+              0);
+    EXPECT_LT(maxDistance(pointsOf(readVtp(fs::path(twist).replace_extension(".vtp"))),
+                          sample("bar_twist4pi.obj").vertices),
+              kInterpolationTolerance);
+    EXPECT_LT(maxDistance(pointsOf(readVtp(fs::path(bend).replace_extension(".vtp"))),
+                          sample("bar_bend.obj").vertices),
+              kInterpolationTolerance);
+    const SurfaceMesh obj = readSurface(fs::path(bend).replace_extension(".obj").string());
+    EXPECT_LT(maxDistance(obj.vertices, sample("bar_bend.obj").vertices), kInterpolationTolerance);
+  }
+}
+
+TEST_F(BlendCommand, StraightFromSurfacesMatchesTheModel) {
+  const RunResult r =
+      tetblend({"blend", "--rest", (dir_ / "bar_rest.obj").string(), "--example",
+                (dir_ / "bar_twist4pi.obj").string(), "--example", (dir_ / "bar_bend.obj").string(),
+                "-w", "0.3,0.4", "-o", (dir_ / "direct.vtu").string(), "--quiet"},
+               dir_);
+  ASSERT_EQ(r.code, 0) << r.err;
+  ASSERT_EQ(
+      tetblend({"blend", model_.string(), "-w", "0.3,0.4", "-o", (dir_ / "via_model.vtu").string()},
+               dir_)
+          .code,
+      0);
+  // Same surfaces, same TetGen run and placement: the same shape to round-off.
+  EXPECT_LT(maxDistance(pointsOf(readVtp(dir_ / "direct.vtp")),
+                        pointsOf(readVtp(dir_ / "via_model.vtp"))),
+            kInterpolationTolerance);
+}
+
+}  // namespace
+}  // namespace tetblend::apps_test
