@@ -26,12 +26,15 @@ double sinc(double phi) {
   return std::sin(phi) / phi;
 }
 
-double phiOverSin(double phi) {
+// phi / sin(phi), given sinPhi = |vec(q0)| itself rather than sin(atan2(..)):
+// near phi = pi, sin(phi) of the rounded phi is off by ~1e-16 absolute, which
+// is a large relative error when sin(phi) is tiny.
+double phiOverSin(double phi, double sinPhi) {
   if (phi < kDualQuaternionSeriesThreshold) {
     const double p2 = phi * phi;
     return 1.0 + p2 / 6.0 + 7.0 * p2 * p2 / 360.0;
   }
-  return phi / std::sin(phi);
+  return phi / sinPhi;
 }
 
 // (cos(phi) - sin(phi)/phi) / phi^2 = d(sinc)/dphi / phi.
@@ -165,7 +168,7 @@ DualQuaternion DualQuaternion::log() const {
         "or does not exist; use canonicalSign() to take the logarithm of the motion");
   }
   const double phi = std::atan2(s, real_.w());
-  const double c = phiOverSin(phi);
+  const double c = phiOverSin(phi, s);
   const double k = sincDerivativeOverPhi(phi);
   const Eigen::Vector3d a = c * v0;
   // Invert exp's dual part: w_eps = -sinc <a,b>, v_eps = sinc b + k <a,b> a.

@@ -173,6 +173,12 @@ TEST(DualQuaternion, LogAtTheAntipodalSingularity) {
   const DualQuaternion x = minusOne.canonicalSign().log();
   EXPECT_LE(x.real().vec().norm(), 0.0);
   EXPECT_LE((2 * x.dual().vec() - Eigen::Vector3d(-1, 0, 0)).norm(), kRoundTripTol);
+  // Both sides of the 1e-12 guard on |vec(q0)| (w < 0): refused just inside,
+  // computed just outside (its rotation part round-trips).
+  const Eigen::Quaterniond inside(-1.0, 1e-13, 0, 0), outside(-1.0, 1e-11, 0, 0);
+  EXPECT_THROW(DualQuaternion(inside, Eigen::Quaterniond(0, 0, 0, 0)).log(), DomainError);
+  const DualQuaternion justOutside(outside.normalized(), Eigen::Quaterniond(0, 0, 0, 0));
+  EXPECT_LE(DualQuaternion::exp(justOutside.log()).distanceUpToSign(justOutside), kRoundTripTol);
   // Just inside half-angle pi (w < 0) the log exists and round-trips.
   const DualQuaternion near = DualQuaternion::exp(
       DualQuaternion::pure((kPi - 1e-3) * Eigen::Vector3d(0, 0, 1), Eigen::Vector3d(1, 2, 3)));
