@@ -191,8 +191,8 @@ Vertices twistAboutAxis(const Vertices& vertices, const Eigen::Vector3d& origin,
 }
 
 Vertices bendAboutAxis(const Vertices& vertices, const Eigen::Vector3d& origin,
-                       const Eigen::Vector3d& lengthDirection,
-                       const Eigen::Vector3d& bendDirection, double totalAngle, double length) {
+                       const Eigen::Vector3d& lengthDirection, const Eigen::Vector3d& bendDirection,
+                       double totalAngle, double length) {
   requirePositiveSize(length, "length", "bendAboutAxis");
   if (lengthDirection.norm() == 0.0) {
     throw InputError("bendAboutAxis: lengthDirection is the zero vector");
@@ -217,8 +217,8 @@ Vertices bendAboutAxis(const Vertices& vertices, const Eigen::Vector3d& origin,
     }
     const double arc = std::min(s, length);
     const double theta = arc / radius;
-    Eigen::Vector3d q = (radius - (radius - y) * std::cos(theta)) * ey +
-                        (radius - y) * std::sin(theta) * ex + rest;
+    Eigen::Vector3d q =
+        (radius - (radius - y) * std::cos(theta)) * ey + (radius - y) * std::sin(theta) * ex + rest;
     if (s > length) q += (s - length) * (std::cos(theta) * ex + std::sin(theta) * ey);
     result.row(v) = (origin + q).transpose();
   }

@@ -36,8 +36,7 @@ SurfaceMesh boundarySurface(const TetMesh& mesh) {
       faces.push_back(face);
     }
   }
-  std::sort(faces.begin(), faces.end(),
-            [](const Face& a, const Face& b) { return a.key < b.key; });
+  std::sort(faces.begin(), faces.end(), [](const Face& a, const Face& b) { return a.key < b.key; });
   std::vector<std::array<int, 3>> boundary;
   for (size_t i = 0; i < faces.size();) {
     size_t j = i;

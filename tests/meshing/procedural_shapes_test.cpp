@@ -122,17 +122,16 @@ TEST(ProceduralShapes, RejectsBadSizes) {
   EXPECT_THROW(boxTetMesh(0, 1, 1, Eigen::Vector3d::Ones()), InputError);
   EXPECT_THROW(boxTetMesh(1, 1, 1, Eigen::Vector3d(1, -1, 1)), InputError);
   EXPECT_THROW(cylinderTetMesh(1, 1, 0.0, 1.0), InputError);
-  EXPECT_THROW(twistAboutAxis(Vertices(1, 3), Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(),
-                              1.0, 1.0),
-               InputError);
+  EXPECT_THROW(
+      twistAboutAxis(Vertices(1, 3), Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), 1.0, 1.0),
+      InputError);
 }
 
 TEST(ProceduralShapes, TwistRotatesEachSectionRigidlyByItsAngle) {
   const TetMesh bar = boxTetMesh(2, 2, 8, Eigen::Vector3d(0.5, 0.5, 4.0));
   for (const double total : {2.0 * kPi, 4.0 * kPi}) {
-    const Vertices twisted =
-        twistAboutAxis(bar.vertices, Eigen::Vector3d(0, 0, -2.0), Eigen::Vector3d::UnitZ(), total,
-                       4.0);
+    const Vertices twisted = twistAboutAxis(bar.vertices, Eigen::Vector3d(0, 0, -2.0),
+                                            Eigen::Vector3d::UnitZ(), total, 4.0);
     for (Eigen::Index v = 0; v < bar.vertices.rows(); ++v) {
       const Eigen::Vector3d p = bar.vertices.row(v);
       const Eigen::Vector3d q = twisted.row(v);
@@ -193,8 +192,8 @@ TEST(ProceduralShapes, SkinningRigidCasesAndDqsPreservesLengthsWhereLbsCollapses
     EXPECT_NEAR(dqs(v, 0), points(v, 0), 1e-12);
     // Oracle for LBS: |(1-w) p + w R p| in the section, closed form.
     const double w = weights(v, 1);
-    const double expected = r * std::sqrt((1 - w) * (1 - w) + w * w + 2 * w * (1 - w) *
-                                                                          std::cos(angle));
+    const double expected =
+        r * std::sqrt((1 - w) * (1 - w) + w * w + 2 * w * (1 - w) * std::cos(angle));
     EXPECT_NEAR(std::hypot(lbs(v, 1), lbs(v, 2)), expected, 1e-12);
     // Rigid parts: weight 0 keeps the point, weight 1 applies bone 1.
     if (w == 0.0 || w == 1.0) {

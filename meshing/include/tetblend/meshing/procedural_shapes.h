@@ -56,8 +56,8 @@ Vertices twistAboutAxis(const Vertices& vertices, const Eigen::Vector3d& origin,
 /// totalAngle = 0 returns the input. Throws InputError on zero directions
 /// or length <= 0.
 Vertices bendAboutAxis(const Vertices& vertices, const Eigen::Vector3d& origin,
-                       const Eigen::Vector3d& lengthDirection,
-                       const Eigen::Vector3d& bendDirection, double totalAngle, double length);
+                       const Eigen::Vector3d& lengthDirection, const Eigen::Vector3d& bendDirection,
+                       double totalAngle, double length);
 
 /// Skinning weights of a two-bone limb (#V by 2, rows sum to 1): bone 0 on the
 /// side of `joint` opposite to `boneDirection`, bone 1 along it. The weight of

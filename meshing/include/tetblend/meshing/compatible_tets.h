@@ -1,0 +1,104 @@
+#pragma once
+// Compatible tetrahedral meshes: given the rest tet mesh (surface vertices
+// first, then interior Steiner points, as TetGen's `Y` switch returns them)
+// and an example surface with the rest surface's connectivity, place the
+// interior vertices so every example tet keeps a positive volume. The
+// boundary is pinned to the example surface exactly.
+//
+// Pipeline per example (one factorisation of the rest stiffness matrix is
+// shared by every step and every example):
+//  1. harmonic extension: piecewise-linear FEM Laplace equation with the
+//     surface as Dirichlet data; reproduces affine boundary maps exactly;
+//  2. volumetric ARAP (Sorkine & Alexa 2007, per tet: min Σ_t vol_t
+//     ‖∇_t x − R_t‖², local polar rotation, global solve with the same
+//     matrix), warm-started from a rotation field propagated from the
+//     boundary (so twists of several turns and 180° bends do not start from
+//     the collapsed harmonic rotations);
+//  3. if tets are still inverted: untangling of the interior vertices by
+//     minimising a regularised distortion energy with a decreasing
+//     regularisation (Garanzha, Kaporin, Kudryavtseva, Protais, Ray,
+//     Sokolov, "Foldover-free maps in 50 lines of code", 2021).
+// The result reports exactly which tets remain inverted, if any.
+
+#include <memory>
+#include <vector>
+
+#include "tetblend/core/mesh_types.h"
+
+namespace tetblend {
+
+/// Options of CompatibleTetBuilder, with their defaults.
+struct CompatibleTetOptions {
+  /// Maximum number of ARAP local–global iterations (0 = harmonic only, or
+  /// the propagated-rotation start when propagateRotations is true).
+  int arapIterations = 50;
+  /// ARAP stops when no interior vertex moved more than this fraction of the
+  /// rest bounding-box diagonal in one iteration (relative, unitless).
+  double arapRelativeTolerance = 1e-7;
+  /// Start ARAP from rotations propagated from the boundary instead of the
+  /// rotations of the harmonic extension (step 2 above).
+  bool propagateRotations = true;
+  /// Run the untangling step when tets are still inverted after ARAP.
+  bool untangle = true;
+  /// Untangling frees the interior vertices within this many tet-rings of
+  /// the inverted tets first; the ring count doubles while tets stay
+  /// inverted, until the whole interior is free.
+  int untangleRings = 3;
+  /// Maximum number of outer (regularisation-decrease) rounds per untangling
+  /// attempt.
+  int untangleRounds = 40;
+  /// Maximum L-BFGS iterations per untangling round.
+  int untangleIterationsPerRound = 100;
+};
+
+/// One example's compatible tet mesh.
+struct CompatibleTetResult {
+  Vertices vertices;                    ///< #V by 3: rows 0..#S-1 equal the example surface
+  std::vector<int> invertedTets;        ///< indices of tets with signed volume <= 0, ascending
+  std::vector<double> invertedVolumes;  ///< their signed volumes (units of length³)
+  int harmonicInvertedCount = 0;        ///< inverted tets of the harmonic extension alone
+  int arapIterations = 0;               ///< ARAP iterations performed
+  int untangleRounds = 0;               ///< untangling rounds performed (0 if not needed)
+  /// ARAP energy Σ_t vol_t ‖∇_t x − R_t‖² / Σ_t vol_t (unitless) of the result.
+  double arapEnergy = 0.0;
+  /// Smallest det(∇_t x) over the tets (unitless volume ratio example/rest).
+  double minVolumeRatio = 0.0;
+};
+
+/// Factor-once builder of compatible tet meshes for one rest mesh
+/// (geometry-central style: build once, call place() for every example).
+class CompatibleTetBuilder {
+ public:
+  /// `rest`: #V by 3 vertices and #T by 4 positively oriented tets whose
+  /// first `surfaceVertexCount` (#S) vertices are the surface vertices (the
+  /// ones on boundary faces); the remaining #V−#S are interior. Assembles the
+  /// P1 stiffness matrix and factors its interior block (Cholesky).
+  /// Throws InputError if a tet is not positively oriented, an index is out of
+  /// range, #S is out of [1, #V], or a vertex ≥ #S lies on a boundary face;
+  /// NumericalError if the factorisation fails.
+  CompatibleTetBuilder(const TetMesh& rest, int surfaceVertexCount,
+                       const CompatibleTetOptions& options = {});
+  ~CompatibleTetBuilder();
+  CompatibleTetBuilder(CompatibleTetBuilder&&) noexcept;
+  CompatibleTetBuilder& operator=(CompatibleTetBuilder&&) noexcept;
+
+  /// Places the interior for the example surface positions `exampleSurface`
+  /// (#S by 3, same vertex order as the rest surface) by steps 1–3 above.
+  /// Throws InputError on a wrong row count or non-finite positions.
+  CompatibleTetResult place(const Vertices& exampleSurface) const;
+
+  /// Step 1 only: the harmonic extension (#V by 3), exact for affine maps.
+  Vertices harmonicExtension(const Vertices& exampleSurface) const;
+
+  int surfaceVertexCount() const;
+  const TetMesh& restMesh() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+/// Indices (ascending) of the tets of (vertices, tets) with signed volume <= 0.
+std::vector<int> invertedTets(const Vertices& vertices, const Tets& tets);
+
+}  // namespace tetblend

@@ -1,0 +1,32 @@
+#pragma once
+// Private: per-tet P1 finite-element data of a rest mesh, shared by the
+// compatible-tet builder and the untangling step.
+
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "tetblend/core/mesh_types.h"
+
+namespace tetblend {
+
+/// Rest data of one tet: the deformation gradient of corner positions
+/// X (3 by 4, corners as columns) is F = X * gradients^T.
+struct TetElement {
+  Eigen::Matrix<double, 3, 4> gradients;  ///< gradients of the 4 barycentric coordinates
+  double volume = 0.0;                    ///< rest volume (> 0)
+};
+
+/// Elements of every tet of `mesh`. Throws InputError naming the first tet
+/// whose rest volume is not positive or whose index is out of range.
+std::vector<TetElement> buildTetElements(const TetMesh& mesh);
+
+/// Deformation gradient of tet `t` under `positions` (#V by 3).
+Eigen::Matrix3d deformationGradient(const Vertices& positions, const Eigen::RowVector4i& tet,
+                                    const TetElement& element);
+
+/// Rotation closest to `f` in the Frobenius norm (SVD, reflection removed);
+/// defined for every f, including det f <= 0.
+Eigen::Matrix3d closestRotation(const Eigen::Matrix3d& f);
+
+}  // namespace tetblend

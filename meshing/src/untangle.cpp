@@ -1,0 +1,208 @@
+#include "untangle.h"
+
+#include <algorithm>
+#include <cmath>
+#include <deque>
+#include <limits>
+
+#include <Eigen/Geometry>
+#include <Eigen/LU>
+
+namespace tetblend {
+namespace {
+
+constexpr double kVolumeWeight = 0.5;  // θ: weight of the volume term (paper's choice in 3D)
+constexpr int kLbfgsMemory = 10;
+constexpr double kArmijo = 1e-4;
+constexpr int kMaxHalvings = 40;
+// Gradient-norm stop of one round, relative to the gradient at its start.
+constexpr double kRelativeGradientTolerance = 1e-3;
+
+class UntangleEnergy {
+ public:
+  UntangleEnergy(const Tets& tets, const std::vector<TetElement>& elements,
+                 const std::vector<int>& freeVertices, const Vertices& positions)
+      : tets_(tets),
+        elements_(elements),
+        freeVertices_(freeVertices),
+        variable_(static_cast<size_t>(positions.rows()), -1),
+        positions_(positions) {
+    for (size_t i = 0; i < freeVertices.size(); ++i) {
+      variable_[static_cast<size_t>(freeVertices[i])] = static_cast<int>(i);
+    }
+    for (Eigen::Index t = 0; t < tets.rows(); ++t) {
+      for (int a = 0; a < 4; ++a) {
+        if (variable_[static_cast<size_t>(tets(t, a))] >= 0) {
+          active_.push_back(static_cast<int>(t));
+          break;
+        }
+      }
+    }
+    for (int t : active_) totalVolume_ += elements[static_cast<size_t>(t)].volume;
+  }
+
+  Eigen::VectorXd freeVariables() const {
+    Eigen::VectorXd x(3 * static_cast<Eigen::Index>(freeVertices_.size()));
+    for (size_t i = 0; i < freeVertices_.size(); ++i) {
+      x.segment<3>(3 * static_cast<Eigen::Index>(i)) = positions_.row(freeVertices_[i]);
+    }
+    return x;
+  }
+
+  void setFreeVariables(const Eigen::VectorXd& x) {
+    for (size_t i = 0; i < freeVertices_.size(); ++i) {
+      positions_.row(freeVertices_[i]) = x.segment<3>(3 * static_cast<Eigen::Index>(i)).transpose();
+    }
+  }
+
+  // Energy at x; the gradient (same size as x) when `gradient` is non-null.
+  double evaluate(const Eigen::VectorXd& x, double epsilon, Eigen::VectorXd* gradient) {
+    setFreeVariables(x);
+    if (gradient) gradient->setZero(x.size());
+    double energy = 0.0;
+    for (int t : active_) {
+      const Eigen::RowVector4i tet = tets_.row(t);
+      const TetElement& element = elements_[static_cast<size_t>(t)];
+      const Eigen::Matrix3d f = deformationGradient(positions_, tet, element);
+      const double j = f.determinant();
+      const double root = std::sqrt(epsilon * epsilon + j * j);
+      const double chi = 0.5 * (j + root);
+      const double dChi = chi / root;
+      const double frobenius = f.squaredNorm();
+      const double cubeRoot = std::cbrt(chi);
+      const double chiPow = 1.0 / (cubeRoot * cubeRoot);
+      const double weight = element.volume / totalVolume_;
+      energy +=
+          weight * ((1 - kVolumeWeight) * frobenius * chiPow + kVolumeWeight * (j * j + 1) / chi);
+      if (!gradient) continue;
+      const double dEdJ = (1 - kVolumeWeight) * frobenius * (-2.0 / 3.0) * chiPow / chi * dChi +
+                          kVolumeWeight * (2 * j / chi - (j * j + 1) * dChi / (chi * chi));
+      Eigen::Matrix3d cofactor;
+      cofactor.col(0) = f.col(1).cross(f.col(2));
+      cofactor.col(1) = f.col(2).cross(f.col(0));
+      cofactor.col(2) = f.col(0).cross(f.col(1));
+      const Eigen::Matrix3d dEdF =
+          weight * (2 * (1 - kVolumeWeight) * chiPow * f + dEdJ * cofactor);
+      for (int a = 0; a < 4; ++a) {
+        const int i = variable_[static_cast<size_t>(tet(a))];
+        if (i >= 0) gradient->segment<3>(3 * i) += dEdF * element.gradients.col(a);
+      }
+    }
+    return energy;
+  }
+
+  double minDet() const {
+    double result = std::numeric_limits<double>::infinity();
+    for (int t : active_) {
+      result = std::min(
+          result, deformationGradient(positions_, tets_.row(t), elements_[static_cast<size_t>(t)])
+                      .determinant());
+    }
+    return result;
+  }
+
+  const Vertices& positions() const { return positions_; }
+
+ private:
+  const Tets& tets_;
+  const std::vector<TetElement>& elements_;
+  const std::vector<int>& freeVertices_;
+  std::vector<int> variable_;  // per vertex: its index in freeVertices_, or -1
+  Vertices positions_;
+  std::vector<int> active_;
+  double totalVolume_ = 0.0;
+};
+
+// L-BFGS with Armijo backtracking (Nocedal & Wright Alg. 7.4/7.5).
+void minimiseLbfgs(UntangleEnergy& energy, double epsilon, int maxIterations, Eigen::VectorXd& x) {
+  Eigen::VectorXd gradient;
+  double value = energy.evaluate(x, epsilon, &gradient);
+  const double startNorm = gradient.norm();
+  std::deque<Eigen::VectorXd> sHistory;
+  std::deque<Eigen::VectorXd> yHistory;
+  for (int iteration = 0; iteration < maxIterations; ++iteration) {
+    if (gradient.norm() <= kRelativeGradientTolerance * startNorm) break;
+    // Two-loop recursion.
+    Eigen::VectorXd q = gradient;
+    std::vector<double> alpha(sHistory.size());
+    for (int i = static_cast<int>(sHistory.size()) - 1; i >= 0; --i) {
+      alpha[i] = sHistory[i].dot(q) / yHistory[i].dot(sHistory[i]);
+      q -= alpha[i] * yHistory[i];
+    }
+    if (!sHistory.empty()) {
+      q *= sHistory.back().dot(yHistory.back()) / yHistory.back().squaredNorm();
+    } else {
+      q /= std::max(gradient.norm(), 1.0);
+    }
+    for (size_t i = 0; i < sHistory.size(); ++i) {
+      const double beta = yHistory[i].dot(q) / yHistory[i].dot(sHistory[i]);
+      q += (alpha[i] - beta) * sHistory[i];
+    }
+    Eigen::VectorXd direction = -q;
+    double slope = gradient.dot(direction);
+    if (slope >= 0.0) {  // not a descent direction: restart from steepest descent
+      sHistory.clear();
+      yHistory.clear();
+      direction = -gradient / std::max(gradient.norm(), 1.0);
+      slope = gradient.dot(direction);
+    }
+    double step = 1.0;
+    Eigen::VectorXd trial;
+    Eigen::VectorXd trialGradient;
+    double trialValue = value;
+    bool accepted = false;
+    for (int halving = 0; halving < kMaxHalvings; ++halving, step *= 0.5) {
+      trial = x + step * direction;
+      trialValue = energy.evaluate(trial, epsilon, &trialGradient);
+      if (std::isfinite(trialValue) && trialValue <= value + kArmijo * step * slope) {
+        accepted = true;
+        break;
+      }
+    }
+    if (!accepted) break;
+    Eigen::VectorXd s = trial - x;
+    Eigen::VectorXd y = trialGradient - gradient;
+    if (s.dot(y) > 1e-300) {
+      sHistory.push_back(std::move(s));
+      yHistory.push_back(std::move(y));
+      if (static_cast<int>(sHistory.size()) > kLbfgsMemory) {
+        sHistory.pop_front();
+        yHistory.pop_front();
+      }
+    }
+    x = trial;
+    gradient = trialGradient;
+    value = trialValue;
+  }
+  energy.setFreeVariables(x);
+}
+
+}  // namespace
+
+UntangleOutcome untangle(const Tets& tets, const std::vector<TetElement>& elements,
+                         const std::vector<int>& freeVertices, int maxRounds,
+                         int iterationsPerRound, Vertices& positions) {
+  UntangleEnergy energy(tets, elements, freeVertices, positions);
+  UntangleOutcome outcome;
+  outcome.minDet = energy.minDet();
+  Eigen::VectorXd x = energy.freeVariables();
+  // ε schedule of the paper (Alg. 1): start at the scale of the unit
+  // Jacobian, then shrink according to the energy decrease of each round.
+  double epsilon = 1.0;
+  while (outcome.minDet <= 0.0 && outcome.rounds < maxRounds) {
+    const double before = energy.evaluate(x, epsilon, nullptr);
+    minimiseLbfgs(energy, epsilon, iterationsPerRound, x);
+    const double after = energy.evaluate(x, epsilon, nullptr);
+    ++outcome.rounds;
+    outcome.minDet = energy.minDet();
+    const double sigma = std::max(1.0 - after / before, 0.1);
+    const double minDet = outcome.minDet;
+    const double mu =
+        (1.0 - sigma) * 0.5 * (minDet + std::sqrt(epsilon * epsilon + minDet * minDet));
+    epsilon = minDet < mu ? 2.0 * std::sqrt(mu * (mu - minDet)) : 1e-13;
+  }
+  positions = energy.positions();
+  return outcome;
+}
+
+}  // namespace tetblend
