@@ -11,9 +11,13 @@
 //     surface as Dirichlet data; reproduces affine boundary maps exactly;
 //  2. volumetric ARAP (Sorkine & Alexa 2007, per tet: min Σ_t vol_t
 //     ‖∇_t x − R_t‖², local polar rotation, global solve with the same
-//     matrix), warm-started from a rotation field propagated from the
-//     boundary (so twists of several turns and 180° bends do not start from
-//     the collapsed harmonic rotations);
+//     matrix), warm-started from whichever has the lower ARAP energy: the
+//     harmonic extension or the global solve with a rotation field
+//     propagated from the boundary (so twists of several turns and 180°
+//     bends need not start from collapsed harmonic rotations). Of all these
+//     candidates, the one with the fewest inverted tets (then the lowest
+//     ARAP energy) is kept: ARAP can fold strongly compressed regions that
+//     the harmonic extension kept valid;
 //  3. if tets are still inverted: untangling of the interior vertices by
 //     minimising a regularised distortion energy with a decreasing
 //     regularisation (Garanzha, Kaporin, Kudryavtseva, Protais, Ray,
@@ -35,8 +39,8 @@ struct CompatibleTetOptions {
   /// ARAP stops when no interior vertex moved more than this fraction of the
   /// rest bounding-box diagonal in one iteration (relative, unitless).
   double arapRelativeTolerance = 1e-7;
-  /// Start ARAP from rotations propagated from the boundary instead of the
-  /// rotations of the harmonic extension (step 2 above).
+  /// Also try the start from rotations propagated from the boundary (step 2
+  /// above); ARAP starts from it when its ARAP energy beats the harmonic's.
   bool propagateRotations = true;
   /// Run the untangling step when tets are still inverted after ARAP.
   bool untangle = true;
