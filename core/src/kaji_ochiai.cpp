@@ -78,7 +78,17 @@ FrechetBlendResult kajiFrechetBlend(const std::vector<double>& weights,
   const AffineParams start = weightedSum(weights, params);
   FrechetBlendResult result;
   bool rotationConverged = false;
-  Eigen::Matrix3d zr = so3Exp(start.rotationLog);
+  // Start at the input of largest weight (Alg. 2 starts at R_1): the Blend
+  // rotation can sit near the cut locus of the inputs when their angles
+  // approach pi, and the iteration would then settle on another critical point.
+  Eigen::Matrix3d zr = Eigen::Matrix3d::Identity();
+  double largest = identityWeight;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (weights[i] > largest) {
+      largest = weights[i];
+      zr = rotations[i];
+    }
+  }
   for (int it = 0; it < options.maxIterations; ++it) {
     Eigen::Vector3d w = identityWeight * so3Log(zr.transpose());
     for (std::size_t i = 0; i < n; ++i) w += weights[i] * so3Log(zr.transpose() * rotations[i]);

@@ -97,8 +97,10 @@ struct FrechetBlendResult {
 /// Karcher means sum_i w_i log(Z^{-1} X_i) = 0 under the bi-invariant metric of
 /// SO(3) and the affine-invariant metric of Sym+(3) (the stretch step uses the
 /// symmetric form Z^{1/2} exp(sum w_i log(Z^{-1/2} S_i Z^{-1/2})) Z^{1/2} so Z_S
-/// stays symmetric), the translation is sum_i w_i rho(A_i). Both loops start
-/// from Blend instead of A_1. As in Blend, the identity takes the weight
+/// stays symmetric), the translation is sum_i w_i rho(A_i). The rotation loop
+/// starts at the input of largest weight (Alg. 2: A_1), the stretch loop at
+/// the Blend of the stretches (Sym+(3) has a unique mean). As in Blend, the
+/// identity takes the weight
 /// 1 - sum_i w_i. Inputs are 4x4 homogeneous with det > 0 (DomainError
 /// otherwise); InputError if the sizes differ.
 FrechetBlendResult kajiFrechetBlend(const std::vector<double>& weights,
