@@ -60,9 +60,11 @@ Eigen::Vector3d symEigenvalues(const Eigen::Matrix3d& y) {
       c00 * (c11 * c22 - c12 * c12) - c01 * (c01 * c22 - c12 * c02) + c02 * (c01 * c12 - c11 * c02);
   const double r = std::clamp(0.5 * det, -1.0, 1.0);
   const double phi = std::acos(r) / 3.0;
-  constexpr double kTwoPiOver3 = 2.0943951023931954923;
-  const double l1 = q + 2.0 * p * std::cos(phi);
-  const double l3 = q + 2.0 * p * std::cos(phi + kTwoPiOver3);
+  // cos(phi + 2 pi/3) = -cos(phi)/2 - sin(phi) sqrt(3)/2: one sin/cos pair.
+  constexpr double kHalfSqrt3 = 0.86602540378443864676;
+  const double c = std::cos(phi), s = std::sin(phi);
+  const double l1 = q + 2.0 * p * c;
+  const double l3 = q - p * c - 2.0 * p * kHalfSqrt3 * s;
   return Eigen::Vector3d(l1, 3.0 * q - l1 - l3, l3);
 }
 
