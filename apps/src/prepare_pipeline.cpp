@@ -1,5 +1,7 @@
 #include "prepare_pipeline.h"
 
+#include <cmath>
+
 #include "cli_common.h"
 #include "progress.h"
 #include "tetblend/core/error.h"
@@ -10,6 +12,24 @@
 #include "tetblend/meshing/tetrisation.h"
 
 namespace tetblend::cli {
+namespace {
+
+/// Volume of a regular tetrahedron whose edge is the mean edge length of the
+/// triangles of `surface` (each edge counted once per face): a^3 / (6 sqrt 2).
+double autoMaxTetVolume(const SurfaceMesh& surface) {
+  double total = 0.0;
+  for (Eigen::Index f = 0; f < surface.triangles.rows(); ++f) {
+    for (int c = 0; c < 3; ++c) {
+      total += (surface.vertices.row(surface.triangles(f, c)) -
+                surface.vertices.row(surface.triangles(f, (c + 1) % 3)))
+                   .norm();
+    }
+  }
+  const double edge = total / (3.0 * static_cast<double>(surface.triangles.rows()));
+  return edge * edge * edge / (6.0 * std::sqrt(2.0));
+}
+
+}  // namespace
 
 void addPrepareOptions(CLI::App& command, PrepareSettings& settings) {
   command
@@ -19,9 +39,9 @@ void addPrepareOptions(CLI::App& command, PrepareSettings& settings) {
       ->capture_default_str();
   command
       .add_option("--max-volume", settings.maxVolume,
-                  "TetGen volume bound per tet, in mesh units cubed (0 = none)")
-      ->check(CLI::NonNegativeNumber)
-      ->capture_default_str();
+                  "TetGen volume bound per tet, in mesh units cubed (0 = none; default: auto, "
+                  "a regular tet whose edge is the rest surface's mean edge length)")
+      ->check(CLI::NonNegativeNumber);
   command.add_flag("--tetrise", settings.tetrise,
                    "one tet per surface triangle (apex along the normal) instead of TetGen: for "
                    "open or non-watertight surfaces (default: off)");
@@ -61,7 +81,7 @@ ModelData prepareModel(const std::string& restPath, const std::vector<std::strin
   }
   TetGenOptions tetgen;
   tetgen.maxRadiusEdgeRatio = settings.radiusEdgeRatio;
-  tetgen.maxTetVolume = settings.maxVolume;
+  tetgen.maxTetVolume = settings.maxVolume ? *settings.maxVolume : autoMaxTetVolume(rest);
   model.rest = tetrahedralize(rest, tetgen);
   progress.advance();
   const CompatibleTetBuilder builder(model.rest, model.surfaceVertexCount);

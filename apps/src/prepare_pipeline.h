@@ -6,6 +6,7 @@
 // (which blends it directly).
 
 #include <CLI/CLI.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -16,7 +17,12 @@ namespace tetblend::cli {
 /// The meshing options of prepare, with their command-line defaults.
 struct PrepareSettings {
   double radiusEdgeRatio = 2.0;  ///< TetGen quality bound (-q), > 1
-  double maxVolume = 0.0;        ///< TetGen volume bound (-a), mesh units³; 0 = none
+  /// TetGen volume bound (-a), mesh units³; 0 = none; unset = auto: the
+  /// volume of a regular tet whose edge is the rest surface's mean edge
+  /// length, so the interior is as fine as the surface (a 4 pi twist or a
+  /// 180-degree bend needs interior points; TetGen's quality bound alone adds
+  /// few when the surface is already fine).
+  std::optional<double> maxVolume;
   bool tetrise = false;          ///< per-face tetrisation instead of TetGen
   int threads = 0;               ///< worker threads; 0 = all cores
   bool quiet = false;            ///< no progress bar
