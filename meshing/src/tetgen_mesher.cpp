@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <cstring>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "half_edge_table.h"
@@ -14,6 +15,7 @@
 #include "tetblend/core/tet_geometry.h"
 #include "tetblend/meshing/surface_orientation.h"
 #include "tetblend/meshing/surface_validation.h"
+#include "tetgen_child_process.h"
 
 namespace tetblend {
 namespace {
@@ -67,9 +69,10 @@ std::string buildSwitches(const TetGenOptions& options, double diagonal) {
   return s;
 }
 
-// TetGen 1.5 terminatetetgen() codes (tetgen.h), as typed errors.
-[[noreturn]] void throwTetGenError(int code) {
-  const std::string prefix = "TetGen failed (code " + std::to_string(code) + "): ";
+// TetGen 1.5 terminatetetgen() codes (tetgen.h), as typed errors naming the
+// surface.
+[[noreturn]] void throwTetGenError(int code, const std::string& source) {
+  const std::string prefix = source + ": TetGen failed (code " + std::to_string(code) + "): ";
   switch (code) {
     case 1:
       throw Error(prefix +
@@ -100,8 +103,9 @@ std::string buildSwitches(const TetGenOptions& options, double diagonal) {
   }
 }
 
-TetMesh runTetGen(const SurfaceMesh& surface, const std::string& switches) {
-  tetgenio in, out;
+TetMesh runTetGen(const SurfaceMesh& surface, const std::string& switches,
+                  const TetGenOptions& options) {
+  tetgenio in;
   const int nv = static_cast<int>(surface.vertices.rows());
   const int nf = static_cast<int>(surface.triangles.rows());
   in.firstnumber = 0;
@@ -120,27 +124,35 @@ TetMesh runTetGen(const SurfaceMesh& surface, const std::string& switches) {
     facet.polygonlist[0].vertexlist = new int[3];
     for (int k = 0; k < 3; ++k) facet.polygonlist[0].vertexlist[k] = surface.triangles(f, k);
   }
-  std::vector<char> buffer(switches.begin(), switches.end());
-  buffer.push_back('\0');
-  try {
-    ::tetrahedralize(buffer.data(), &in, &out);
-  } catch (int code) {
-    throwTetGenError(code);
+  detail::TetGenChildResult run =
+      detail::runTetGenInChild(switches, in, /*silence=*/options.verbosity <= 0);
+  switch (run.status) {
+    case detail::TetGenChildStatus::kOk:
+      break;
+    case detail::TetGenChildStatus::kTetGenError:
+      throwTetGenError(run.code, options.sourceName);
+    case detail::TetGenChildStatus::kSignal:
+      throw InputError(options.sourceName + ": TetGen crashed (signal " + std::to_string(run.code) +
+                       ", " + run.detail +
+                       ") on this surface; check it for nearly touching facets or tiny "
+                       "features (validateSurface), or remesh it");
+    case detail::TetGenChildStatus::kBrokenChild:
+      throw Error(options.sourceName + ": could not run TetGen in a child process: " + run.detail);
   }
-  if (out.numberofcorners != 4 || out.numberofpoints < nv) {
-    throw NumericalError("TetGen returned " + std::to_string(out.numberofpoints) +
+  if (run.corners != 4 || run.points.rows() < nv) {
+    throw NumericalError("TetGen returned " + std::to_string(run.points.rows()) +
                          " points (input " + std::to_string(nv) + ") and " +
-                         std::to_string(out.numberofcorners) + "-corner elements: unusable");
+                         std::to_string(run.corners) + "-corner elements: unusable");
   }
   TetMesh mesh;
-  mesh.vertices = Eigen::Map<const Vertices>(out.pointlist, out.numberofpoints, 3);
-  mesh.tets = Eigen::Map<const Tets>(out.tetrahedronlist, out.numberoftetrahedra, 4);
+  mesh.vertices = std::move(run.points);
+  mesh.tets = std::move(run.tets);
   if (std::memcmp(mesh.vertices.data(), surface.vertices.data(),
                   sizeof(double) * 3 * static_cast<std::size_t>(nv)) != 0) {
     throw NumericalError("TetGen moved or reordered the surface vertices despite switch Y");
   }
   if (mesh.tets.size() > 0 &&
-      (mesh.tets.minCoeff() < 0 || mesh.tets.maxCoeff() >= out.numberofpoints)) {
+      (mesh.tets.minCoeff() < 0 || mesh.tets.maxCoeff() >= mesh.vertices.rows())) {
     throw NumericalError("TetGen returned a tet index out of range");
   }
   return mesh;
@@ -272,7 +284,7 @@ void checkBoundary(const TetMesh& mesh, const SurfaceMesh& surface) {
 TetMesh tetrahedralize(const SurfaceMesh& closedSurface, const TetGenOptions& options) {
   requireValidRest(closedSurface, options.sourceName);
   const std::string switches = buildSwitches(options, boundingBoxDiagonal(closedSurface.vertices));
-  TetMesh mesh = runTetGen(closedSurface, switches);
+  TetMesh mesh = runTetGen(closedSurface, switches, options);
   orientPositively(mesh);
   mesh = keepInside(mesh, closedSurface);
   checkBoundary(mesh, closedSurface);

@@ -171,6 +171,38 @@ TEST(TetGenMesher, BadSurfacesAreRefusedBeforeTetGen) {
   expectRefused(reversed(cube()), "point inwards");
 }
 
+// Refused by TetGen itself (validation passes): an InputError naming the
+// file and the cause, and this process survives (Debian's TetGen 1.5.0 would
+// abort it in-process by freeing its mesh twice).
+void expectTetGenRefuses(const SurfaceMesh& surface, const std::string& needle) {
+  ASSERT_TRUE(validateSurface(surface, "close.off").ok());
+  TetGenOptions options;
+  options.sourceName = "close.off";
+  try {
+    tetrahedralize(surface, options);
+    FAIL() << "no exception";
+  } catch (const InputError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("close.off"), std::string::npos) << what;
+    EXPECT_NE(what.find("TetGen failed (code"), std::string::npos) << what;
+    EXPECT_NE(what.find(needle), std::string::npos) << what;
+  }
+}
+
+TEST(TetGenMesher, TetGenErrorsBecomeInputErrorsNotCrashes) {
+  // Gap 1e-9 between faces of unit cubes: far below TetGen's relative
+  // tolerance (1e-8 of the bounding box), so it reports facets too close.
+  constexpr double kTinyGap = 1e-9;
+  expectTetGenRefuses(join(cube(), cube(Eigen::Vector3d(1.0 + kTinyGap, 0, 0))), "close");
+  // The same gap well above that tolerance is meshed normally (other side of
+  // the threshold).
+  constexpr double kSafeGap = 1e-3;
+  const SurfaceMesh apart = join(cube(), cube(Eigen::Vector3d(1.0 + kSafeGap, 0, 0)));
+  expectBoundaryPreserved(apart, tetrahedralize(apart));
+  // The mesher still works after a refused surface.
+  expectBoundaryPreserved(cube(), tetrahedralize(cube()));
+}
+
 TEST(TetGenMesher, InvalidOptions) {
   TetGenOptions options;
   options.maxRadiusEdgeRatio = 0.9;

@@ -49,14 +49,15 @@ struct TetGenOptions {
 /// a rotation of the indices within a face); every tet is positively oriented
 /// (det[p1-p0, p2-p0, p3-p0] > 0). TetGen's failures are turned into
 /// InputError (self-intersection, tiny features, very close facets, invalid
-/// input) or NumericalError / Error (internal error, out of memory) with a
-/// message saying what to do.
+/// input, or TetGen crashing on the surface) or NumericalError / Error
+/// (internal error, out of memory, no child process) with a message naming
+/// `options.sourceName` and saying what to do.
 ///
-/// Known limitation of Debian's TetGen 1.5.0: when TetGen itself fails, its
-/// terminatetetgen() frees the mesh and its destructor frees it again, so the
-/// process crashes before the error code reaches this wrapper. Validation
-/// catches the common cause (self-intersection) first; nearly touching
-/// facets or tiny features (codes 4, 5) remain fatal with that build.
+/// TetGen runs in a forked child process (its output comes back through a
+/// pipe): Debian's TetGen 1.5.0 frees its mesh twice when it fails, which
+/// would otherwise abort the caller. The child discards the parent's
+/// unflushed stdio buffers and leaves with _exit (no atexit handlers).
+/// Costs one fork per call and a copy of the output mesh.
 TetMesh tetrahedralize(const SurfaceMesh& closedSurface, const TetGenOptions& options = {});
 
 }  // namespace tetblend
