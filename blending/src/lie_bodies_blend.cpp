@@ -3,6 +3,7 @@
 #include "blend_common.h"
 #include "tetblend/blending/rotation_consistency.h"
 #include "tetblend/core/lie_bodies.h"
+#include "tetblend/core/so3.h"
 #include "tetblend/core/tet_geometry.h"
 
 namespace tetblend {
@@ -22,6 +23,8 @@ class LieBodiesBlender final : public TetMapBlender {
     examples_ = sizes.examples;
     restBodies_.resize(tets_);
     logs_.resize(static_cast<size_t>(tets_) * examples_);
+    lifts_.resize(logs_.size());
+    corrected_.assign(tets_, 0);
     const TetMesh& rest = *input.rest;
     blend_detail::forEachTet(tets_, [&](int j) {
       try {
@@ -42,15 +45,18 @@ class LieBodiesBlender final : public TetMapBlender {
         }
         worldRotations[j] = lieBodyWorldRotation(restBodies_[j], bodies[j]);
       });
-      const std::vector<Eigen::Vector3d> references = rotationLogs(
+      const std::vector<RotationLift> lifts = rotationLifts(
           worldRotations, *input.adjacency, *input.components, input.rotationConsistency);
       blend_detail::forEachTet(tets_, [&](int j) {
+        const size_t slot = static_cast<size_t>(j) * examples_ + k;
         try {
-          logs_[static_cast<size_t>(j) * examples_ + k] =
-              lieBodyRelativeLog(restBodies_[j], bodies[j], references[j]);
+          logs_[slot] = lieBodyRelativeLog(restBodies_[j], bodies[j]);
         } catch (const DomainError& error) {
           blend_detail::rethrowForTet("liebodies", k, j, error);
         }
+        logs_[slot].rigid.setZero();  // the rotation is blended as a lift below
+        lifts_[slot] = lifts[j];
+        if (!lifts[j].correction.isZero(0.0)) corrected_[j] = 1;
       });
     }
     restInverseEdges_ = input.restData->inverseEdges;
@@ -58,6 +64,12 @@ class LieBodiesBlender final : public TetMapBlender {
 
   BlendMethod method() const override { return BlendMethod::kLieBodies; }
 
+  // The blended body is p0 exp(sum_k w_k X_k) for the shear and scale
+  // (Bansal & Tatu eq. 4), with the rigid rotation R0 W(w)^T, where
+  // W(w) = exp(sum_k w_k base_k) exp(sum_k w_k correction_k) blends the lifts
+  // of the world rotations W_k = R_k^T R_0 (rotation_consistency.h; for
+  // corrections 0 this is exactly the rotation part of p0 exp(sum_k w_k X_k)).
+  // The translation of E is irrelevant: the target uses only the edges.
   void blendTargets(const std::vector<double>& weights,
                     std::vector<Eigen::Matrix3d>& targets) const override {
     checkWeights(weights, examples_);
@@ -67,10 +79,19 @@ class LieBodiesBlender final : public TetMapBlender {
                       [&](const tbb::blocked_range<int>& range) {
                         std::vector<LieBodyTangent> logs(examples_);
                         for (int j = range.begin(); j != range.end(); ++j) {
+                          Eigen::Vector3d base = Eigen::Vector3d::Zero();
+                          Eigen::Vector3d correction = Eigen::Vector3d::Zero();
                           for (int k = 0; k < examples_; ++k) {
-                            logs[k] = logs_[static_cast<size_t>(j) * examples_ + k];
+                            const size_t slot = static_cast<size_t>(j) * examples_ + k;
+                            logs[k] = logs_[slot];
+                            base += w(k) * lifts_[slot].base;
+                            correction += w(k) * lifts_[slot].correction;
                           }
-                          const LieBody blended = lieBodyBlend(restBodies_[j], logs, w);
+                          Eigen::Matrix3d world = so3Exp(base);
+                          if (corrected_[j] != 0) world *= so3Exp(correction);
+                          LieBody blended = lieBodyBlend(restBodies_[j], logs, w);
+                          blended.rigid.topLeftCorner<3, 3>() =
+                              restBodies_[j].rigid.topLeftCorner<3, 3>() * world.transpose();
                           targets[j] = lieBodyEdges(blended) * restInverseEdges_[j];
                         }
                       });
@@ -80,7 +101,9 @@ class LieBodiesBlender final : public TetMapBlender {
   int tets_ = 0;
   int examples_ = 0;
   std::vector<LieBody> restBodies_;
-  std::vector<LieBodyTangent> logs_;  // tet-major
+  std::vector<LieBodyTangent> logs_;  // tet-major; shear and scale parts only
+  std::vector<RotationLift> lifts_;   // tet-major: lifts of W_k = R_k^T R_0
+  std::vector<char> corrected_;       // 1 where some example's lift correction is non-zero
   std::vector<Eigen::Matrix3d> restInverseEdges_;
 };
 
