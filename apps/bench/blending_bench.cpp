@@ -104,6 +104,7 @@ void blendBenchmark(benchmark::State& state, BlendMethod method) {
   benchmark::DoNotOptimize(refactored.data());
   const double refactor = secondsSince(refactorStart) + (blend + rhs) / count;
   state.counters["tets"] = tets;
+  state.counters["factor_nnz"] = m.blender->stitch().factorNonzeros();
   state.counters["blend_ms"] = 1e3 * blend / count;
   state.counters["rhs_ms"] = 1e3 * rhs / count;
   state.counters["solve_ms"] = 1e3 * solve / count;

@@ -5,6 +5,7 @@
 
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>
+#include <algorithm>
 #include <chrono>
 #include <numeric>
 #include <sstream>
@@ -13,13 +14,14 @@
 #include "tetblend/core/tet_geometry.h"
 
 #ifdef TETBLEND_HAVE_CHOLMOD
-#include <Eigen/CholmodSupport>
+#include <cholmod.h>
 #endif
 
 namespace tetblend {
 namespace {
 
 using SparseMatrix = Eigen::SparseMatrix<double>;
+using RowMatrix3 = Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>;
 using Clock = std::chrono::steady_clock;
 
 double secondsSince(Clock::time_point start) {
@@ -56,10 +58,141 @@ struct StitchSolver::Impl {
   StitchBackend backend = StitchBackend::kEigenSimplicialLdlt;
   Eigen::SimplicialLDLT<SparseMatrix, Eigen::Lower, Eigen::AMDOrdering<int>> ldlt;
 #ifdef TETBLEND_HAVE_CHOLMOD
-  Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower> cholmod;
+  // Supernodal LL^T of the reduced matrix; CHOLMOD's default ordering
+  // strategy (AMD, and METIS as well when AMD's fill is high, keeping the
+  // sparser factor). Only read after construction.
+  cholmod_common common{};
+  cholmod_factor* cholmodFactor = nullptr;
+  bool commonStarted = false;
+  std::vector<int> factorRow;      // free vertex r -> row of the permuted system
+  std::vector<int> factorVertex;   // row of the permuted system -> vertex
+  Eigen::Index maxUpdateRows = 0;  // largest off-diagonal block of a supernode
+
+  // Solves L L^T y = b in place on `y` (permuted order, #free by 3) from the
+  // supernodal factor's blocks, reading L only: each supernode's diagonal
+  // block is a dense triangular solve and its off-diagonal block one
+  // column-by-column update of the three right-hand sides, reading L once per
+  // pass. (CHOLMOD's own solve goes through the
+  // BLAS, whose narrow three-column kernels were the bottleneck here, and
+  // writes its cholmod_common, which would make concurrent solves race.)
+  void supernodalSolve(RowMatrix3& y, RowMatrix3& update) const {
+    const cholmod_factor& f = *cholmodFactor;
+    const auto* super = static_cast<const int*>(f.super);
+    const auto* pi = static_cast<const int*>(f.pi);
+    const auto* px = static_cast<const int*>(f.px);
+    const auto* rowIndex = static_cast<const int*>(f.s);
+    const auto* values = static_cast<const double*>(f.x);
+    const auto nsuper = static_cast<int>(f.nsuper);
+    update.resize(maxUpdateRows, 3);
+    double* yv = y.data();  // row-major: y(k, d) = yv[3 k + d]
+    double* u = update.data();
+    for (int s = 0; s < nsuper; ++s) {
+      const int first = super[s], columns = super[s + 1] - first;
+      const int height = pi[s + 1] - pi[s], below = height - columns;
+      const double* block = values + px[s];  // column-major, height by columns
+      double* x = yv + 3 * static_cast<Eigen::Index>(first);
+      std::fill(u, u + 3 * below, 0.0);
+      for (int c = 0; c < columns; ++c) {
+        const double* column = block + static_cast<Eigen::Index>(c) * height;
+        const double inverse = 1.0 / column[c];
+        const double x0 = x[3 * c] *= inverse, x1 = x[3 * c + 1] *= inverse,
+                     x2 = x[3 * c + 2] *= inverse;
+        for (int i = c + 1; i < columns; ++i) {
+          x[3 * i] -= column[i] * x0;
+          x[3 * i + 1] -= column[i] * x1;
+          x[3 * i + 2] -= column[i] * x2;
+        }
+        const double* lower = column + columns;
+        for (int i = 0; i < below; ++i) {
+          u[3 * i] += lower[i] * x0;
+          u[3 * i + 1] += lower[i] * x1;
+          u[3 * i + 2] += lower[i] * x2;
+        }
+      }
+      const int* target = rowIndex + pi[s] + columns;
+      for (int i = 0; i < below; ++i) {
+        double* row = yv + 3 * static_cast<Eigen::Index>(target[i]);
+        row[0] -= u[3 * i];
+        row[1] -= u[3 * i + 1];
+        row[2] -= u[3 * i + 2];
+      }
+    }
+    for (int s = nsuper - 1; s >= 0; --s) {
+      const int first = super[s], columns = super[s + 1] - first;
+      const int height = pi[s + 1] - pi[s], below = height - columns;
+      const double* block = values + px[s];
+      double* x = yv + 3 * static_cast<Eigen::Index>(first);
+      const int* source = rowIndex + pi[s] + columns;
+      for (int i = 0; i < below; ++i) {
+        const double* row = yv + 3 * static_cast<Eigen::Index>(source[i]);
+        u[3 * i] = row[0];
+        u[3 * i + 1] = row[1];
+        u[3 * i + 2] = row[2];
+      }
+      for (int c = columns - 1; c >= 0; --c) {
+        const double* column = block + static_cast<Eigen::Index>(c) * height;
+        double x0 = x[3 * c], x1 = x[3 * c + 1], x2 = x[3 * c + 2];
+        for (int i = c + 1; i < columns; ++i) {
+          x0 -= column[i] * x[3 * i];
+          x1 -= column[i] * x[3 * i + 1];
+          x2 -= column[i] * x[3 * i + 2];
+        }
+        const double* lower = column + columns;
+        for (int i = 0; i < below; ++i) {
+          x0 -= lower[i] * u[3 * i];
+          x1 -= lower[i] * u[3 * i + 1];
+          x2 -= lower[i] * u[3 * i + 2];
+        }
+        const double inverse = 1.0 / column[c];
+        x[3 * c] = x0 * inverse;
+        x[3 * c + 1] = x1 * inverse;
+        x[3 * c + 2] = x2 * inverse;
+      }
+    }
+  }
+
+  void factorCholmod(SparseMatrix& matrix) {
+    cholmod_start(&common);
+    commonStarted = true;
+    common.print = 0;  // library code never prints; failures are thrown below
+    common.supernodal = CHOLMOD_SUPERNODAL;
+    cholmod_sparse view{};
+    view.nrow = view.ncol = static_cast<size_t>(matrix.rows());
+    view.nzmax = static_cast<size_t>(matrix.nonZeros());
+    view.p = matrix.outerIndexPtr();
+    view.i = matrix.innerIndexPtr();
+    view.x = matrix.valuePtr();
+    view.stype = -1;  // lower triangle stored
+    view.itype = CHOLMOD_INT;
+    view.xtype = CHOLMOD_REAL;
+    view.dtype = CHOLMOD_DOUBLE;
+    view.sorted = 1;
+    view.packed = 1;
+    cholmodFactor = cholmod_analyze(&view, &common);
+    if (cholmodFactor == nullptr || !cholmod_factorize(&view, cholmodFactor, &common) ||
+        common.status != CHOLMOD_OK || cholmodFactor->minor < cholmodFactor->n) {
+      throw NumericalError(
+          "stitch: CHOLMOD could not factor G^T W G (the rest mesh may have near-degenerate "
+          "tets)");
+    }
+    if (!cholmodFactor->is_super || !cholmodFactor->is_ll) {
+      throw NumericalError("stitch: CHOLMOD did not return a supernodal LL^T factor");
+    }
+    const auto* perm = static_cast<const int*>(cholmodFactor->Perm);
+    factorRow.resize(freeVertices.size());
+    factorVertex.resize(freeVertices.size());
+    for (size_t k = 0; k < freeVertices.size(); ++k) {
+      factorRow[perm[k]] = static_cast<int>(k);
+      factorVertex[k] = freeVertices[perm[k]];
+    }
+    const auto* super = static_cast<const int*>(cholmodFactor->super);
+    const auto* pi = static_cast<const int*>(cholmodFactor->pi);
+    for (size_t s = 0; s < cholmodFactor->nsuper; ++s) {
+      maxUpdateRows =
+          std::max<Eigen::Index>(maxUpdateRows, (pi[s + 1] - pi[s]) - (super[s + 1] - super[s]));
+    }
+  }
 #endif
-  mutable Eigen::Matrix<double, Eigen::Dynamic, 3> rhs;
-  mutable Eigen::Matrix<double, Eigen::Dynamic, 3> reducedSolution;
 
   void buildComponents(int vertexCount) {
     std::vector<int> parent(vertexCount);
@@ -103,6 +236,30 @@ struct StitchSolver::Impl {
     }
   }
 
+  // rhs(r, :) = sum over the tets j of free vertex r (corner c) of
+  // vol_j B_j g_c (Sumner-Popovic eq. 6's right-hand side), rows in reduced order.
+  // Row rowOf[r] receives free vertex r (identity when rowOf is empty).
+  template <typename Rhs>
+  void assembleRhs(const std::vector<Eigen::Matrix3d>& targets, const std::vector<int>& rowOf,
+                   Rhs& rhs) const {
+    const auto freeCount = static_cast<Eigen::Index>(freeVertices.size());
+    tbb::parallel_for(tbb::blocked_range<Eigen::Index>(0, freeCount, 2048),
+                      [&](const tbb::blocked_range<Eigen::Index>& range) {
+                        for (Eigen::Index r = range.begin(); r != range.end(); ++r) {
+                          const int v = freeVertices[r];
+                          Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+                          for (int k = incidenceStart[v]; k < incidenceStart[v + 1]; ++k) {
+                            const int tet = incidence[k] >> 2;
+                            const int corner = incidence[k] & 3;
+                            sum.noalias() +=
+                                rest.volumes[tet] *
+                                (targets[tet] * cornerGradient(rest.inverseEdges[tet], corner));
+                          }
+                          rhs.row(rowOf.empty() ? r : rowOf[r]) = sum.transpose();
+                        }
+                      });
+  }
+
   SparseMatrix reducedNormalMatrix() const {
     std::vector<Eigen::Triplet<double>> triplets;
     triplets.reserve(10 * static_cast<size_t>(tets.rows()));
@@ -135,6 +292,20 @@ struct StitchSolver::Impl {
   }
 };
 
+struct StitchWorkspace::Impl {
+  // Right-hand side, then solution, of the reduced system, one row of x, y, z
+  // per free vertex: in the factor's (permuted) order for CHOLMOD, in
+  // reduced order for SimplicialLDLT.
+  RowMatrix3 values;
+  RowMatrix3 update;                                  // one supernode's L21 * X
+  Eigen::Matrix<double, Eigen::Dynamic, 3> solution;  // SimplicialLDLT backend only
+};
+
+StitchWorkspace::StitchWorkspace() : impl_(std::make_unique<Impl>()) {}
+StitchWorkspace::~StitchWorkspace() = default;
+StitchWorkspace::StitchWorkspace(StitchWorkspace&&) noexcept = default;
+StitchWorkspace& StitchWorkspace::operator=(StitchWorkspace&&) noexcept = default;
+
 StitchSolver::StitchSolver(const TetMesh& rest, const StitchOptions& options)
     : impl_(std::make_unique<Impl>()) {
   Impl& m = *impl_;
@@ -143,11 +314,11 @@ StitchSolver::StitchSolver(const TetMesh& rest, const StitchOptions& options)
   const int vertexCount = static_cast<int>(rest.vertices.rows());
   m.buildComponents(vertexCount);
   m.buildIncidence(vertexCount);
-  const SparseMatrix matrix = m.reducedNormalMatrix();
+  SparseMatrix matrix = m.reducedNormalMatrix();
 #ifdef TETBLEND_HAVE_CHOLMOD
-  if (options.backend == StitchBackend::kCholmodSupernodal) {
+  if (options.backend == StitchBackend::kCholmodSupernodal && matrix.rows() > 0) {
     m.backend = StitchBackend::kCholmodSupernodal;
-    m.factor(m.cholmod, matrix);
+    m.factorCholmod(matrix);
     return;
   }
 #else
@@ -168,6 +339,13 @@ const std::vector<int>& StitchSolver::vertexComponent() const { return impl_->co
 const RestTetData& StitchSolver::restData() const { return impl_->rest; }
 const Tets& StitchSolver::tets() const { return impl_->tets; }
 StitchBackend StitchSolver::backend() const { return impl_->backend; }
+
+double StitchSolver::factorNonzeros() const {
+#ifdef TETBLEND_HAVE_CHOLMOD
+  if (impl_->cholmodFactor != nullptr) return static_cast<double>(impl_->cholmodFactor->xsize);
+#endif
+  return static_cast<double>(impl_->ldlt.matrixL().nestedExpression().nonZeros());
+}
 
 Centroids StitchSolver::componentCentroids(const Vertices& vertices) const {
   if (vertices.rows() != vertexCount()) {
@@ -192,7 +370,15 @@ Vertices StitchSolver::solve(const std::vector<Eigen::Matrix3d>& targets,
 void StitchSolver::solveInto(const std::vector<Eigen::Matrix3d>& targets,
                              const Centroids& centroids, Vertices& result,
                              StitchTimings* timings) const {
+  StitchWorkspace workspace;
+  solveInto(targets, centroids, result, workspace, timings);
+}
+
+void StitchSolver::solveInto(const std::vector<Eigen::Matrix3d>& targets,
+                             const Centroids& centroids, Vertices& result,
+                             StitchWorkspace& workspace, StitchTimings* timings) const {
   const Impl& m = *impl_;
+  StitchWorkspace::Impl& w = *workspace.impl_;
   if (static_cast<int>(targets.size()) != tetCount() || centroids.rows() != componentCount()) {
     std::ostringstream message;
     message << "stitch: got " << targets.size() << " target maps and " << centroids.rows()
@@ -202,35 +388,25 @@ void StitchSolver::solveInto(const std::vector<Eigen::Matrix3d>& targets,
   }
   auto start = Clock::now();
   const auto freeCount = static_cast<Eigen::Index>(m.freeVertices.size());
-  m.rhs.resize(freeCount, 3);
-  tbb::parallel_for(tbb::blocked_range<Eigen::Index>(0, freeCount, 2048),
-                    [&](const tbb::blocked_range<Eigen::Index>& range) {
-                      for (Eigen::Index r = range.begin(); r != range.end(); ++r) {
-                        const int v = m.freeVertices[r];
-                        Eigen::Vector3d sum = Eigen::Vector3d::Zero();
-                        for (int k = m.incidenceStart[v]; k < m.incidenceStart[v + 1]; ++k) {
-                          const int tet = m.incidence[k] >> 2;
-                          const int corner = m.incidence[k] & 3;
-                          sum += m.rest.volumes[tet] *
-                                 (targets[tet] * cornerGradient(m.rest.inverseEdges[tet], corner));
-                        }
-                        m.rhs.row(r) = sum.transpose();
-                      }
-                    });
-  if (timings != nullptr) timings->rhsSeconds = secondsSince(start);
-  start = Clock::now();
+  result.setZero(vertexCount(), 3);
 #ifdef TETBLEND_HAVE_CHOLMOD
   if (m.backend == StitchBackend::kCholmodSupernodal) {
-    m.reducedSolution = m.cholmod.solve(m.rhs);
-  } else {
-    m.reducedSolution = m.ldlt.solve(m.rhs);
+    w.values.resize(freeCount, 3);
+    m.assembleRhs(targets, m.factorRow, w.values);
+    if (timings != nullptr) timings->rhsSeconds = secondsSince(start);
+    start = Clock::now();
+    m.supernodalSolve(w.values, w.update);
+    for (Eigen::Index k = 0; k < freeCount; ++k) result.row(m.factorVertex[k]) = w.values.row(k);
   }
-#else
-  m.reducedSolution = m.ldlt.solve(m.rhs);
 #endif
-  result.setZero(vertexCount(), 3);
-  for (Eigen::Index r = 0; r < freeCount; ++r)
-    result.row(m.freeVertices[r]) = m.reducedSolution.row(r);
+  if (m.backend == StitchBackend::kEigenSimplicialLdlt) {
+    w.values.resize(freeCount, 3);
+    m.assembleRhs(targets, {}, w.values);
+    if (timings != nullptr) timings->rhsSeconds = secondsSince(start);
+    start = Clock::now();
+    w.solution = m.ldlt.solve(w.values);
+    for (Eigen::Index r = 0; r < freeCount; ++r) result.row(m.freeVertices[r]) = w.solution.row(r);
+  }
   const Centroids shift = centroids - componentCentroids(result);
   for (int v = 0; v < vertexCount(); ++v) result.row(v) += shift.row(m.component[v]);
   if (timings != nullptr) timings->solveSeconds = secondsSince(start);

@@ -40,14 +40,34 @@ struct StitchTimings {
   double solveSeconds = 0.0;  ///< back-substitution and centroid placement
 };
 
+class StitchSolver;
+
+/// Dense buffers of one stitch solve (right-hand side, solution, CHOLMOD's
+/// solve workspace). Reusing one across solves of the same solver avoids
+/// reallocating them; one workspace must not be used by two threads at once.
+class StitchWorkspace {
+ public:
+  StitchWorkspace();
+  ~StitchWorkspace();
+  StitchWorkspace(StitchWorkspace&&) noexcept;
+  StitchWorkspace& operator=(StitchWorkspace&&) noexcept;
+
+ private:
+  friend class StitchSolver;
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
 /// Factors the stitch once for a rest mesh, then solves for any target field.
 /// Vertex components are the classes of "shares a tet" (a vertex in no tet is
 /// its own component); each component's lowest-index vertex is pinned to
 /// remove the translation null space, and after the solve each component is
 /// translated so that its vertex centroid (mean of its vertices) equals the
 /// centroid the caller asks for. solveInto is deterministic (the parallel
-/// right-hand side sums each vertex's tets in a fixed order) but not safe to
-/// call concurrently on one solver (the factorisation keeps a workspace).
+/// right-hand side sums each vertex's tets in a fixed order) and safe to call
+/// concurrently on one solver: the factor is only read, and every call solves
+/// in its own StitchWorkspace (its own cholmod_common and dense buffers for
+/// cholmod_solve2), so no lock is taken.
 class StitchSolver {
  public:
   /// Builds the gradient operator of `rest` (#V by 3 vertices, #T by 4 tets)
@@ -70,6 +90,9 @@ class StitchSolver {
   const Tets& tets() const;
   /// The backend actually used.
   StitchBackend backend() const;
+  /// Stored entries of the Cholesky factor (its memory is about 8 bytes each;
+  /// each solve reads them twice).
+  double factorNonzeros() const;
 
   /// Mean of the vertices of each component (#C by 3) of `vertices` (#V by 3).
   Centroids componentCentroids(const Vertices& vertices) const;
@@ -80,9 +103,16 @@ class StitchSolver {
   Vertices solve(const std::vector<Eigen::Matrix3d>& targets, const Centroids& centroids) const;
 
   /// As solve, writing into `result` (resized if needed, reused otherwise) and
-  /// optionally reporting the time of each half in `timings`.
+  /// optionally reporting the time of each half in `timings`. Uses a
+  /// workspace local to the call.
   void solveInto(const std::vector<Eigen::Matrix3d>& targets, const Centroids& centroids,
                  Vertices& result, StitchTimings* timings = nullptr) const;
+
+  /// As solveInto, solving in the caller's `workspace` (x, y and z as one
+  /// three-column CHOLMOD solve of the reduced system, no factor copy).
+  void solveInto(const std::vector<Eigen::Matrix3d>& targets, const Centroids& centroids,
+                 Vertices& result, StitchWorkspace& workspace,
+                 StitchTimings* timings = nullptr) const;
 
   /// Deformation gradient grad_j(x) (3 by 3) of tet j for positions `x`.
   Eigen::Matrix3d gradient(const Vertices& x, int tet) const;
