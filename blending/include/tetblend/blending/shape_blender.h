@@ -79,7 +79,10 @@ class ShapeBlender {
   /// weight count or an unprepared method, DomainError (naming the tet) where
   /// the method cannot blend these weights.
   BlendResult blend(const std::vector<double>& weights, BlendMethod method) const;
-  /// As blend, reusing the storage of `result`. Not safe to call concurrently.
+  /// As blend, reusing the storage of `result`. blend and blendInto are safe
+  /// to call from several threads at once (each with its own `result`): the
+  /// prepared data and the factor are only read, and each call solves in its
+  /// own StitchWorkspace (no lock).
   void blendInto(const std::vector<double>& weights, BlendMethod method, BlendResult& result) const;
 
   int exampleCount() const;
