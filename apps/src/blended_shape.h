@@ -1,43 +1,44 @@
 #pragma once
 // One blend as the subcommands use it: blend, then the per-tet quality
-// arrays written as cell data and the summary figures of the batch tables.
+// arrays (the blending library's tetQuality) written as cell data and the
+// summary figures (summarizeQuality) of the batch tables.
 
 #include <string>
+#include <utility>
 #include <vector>
 
+#include "tetblend/blending/quality.h"
 #include "tetblend/blending/shape_blender.h"
 #include "tetblend/meshing/mesh_data_arrays.h"
 
 namespace tetblend::cli {
 
-/// Summary of the per-tet quality of one blended shape.
-struct QualitySummary {
-  double minVolumeRatio = 0.0;      ///< min_j det(grad_j x) (unitless, blended/rest)
-  double maxVolumeRatio = 0.0;      ///< max_j det(grad_j x)
-  int invertedTets = 0;             ///< tets with det(grad_j x) <= 0
-  double meanTargetResidual = 0.0;  ///< volume-weighted mean of the relative residual
-  double maxTargetResidual = 0.0;   ///< max_j |grad_j x - B_j|_F / |B_j|_F
-};
-
 /// A blended shape with its quality.
 struct BlendedShape {
   Vertices vertices;                 ///< #V by 3, the model's vertex order
   std::vector<NamedArray> cellData;  ///< per-tet arrays (see blendShape)
-  QualitySummary quality;
+  QualitySummary quality;            ///< summarizeQuality of the cell arrays
 };
 
-/// Blends `weights` with `method` on a prepared `blender`, and
-/// computes per tet j (cell arrays): "volume_ratio" det(grad_j x) (1 = volume
-/// kept, <= 0 = inverted), "inverted" (1 or 0), and, for the methods with
-/// per-tet targets, "target_residual" |grad_j x - B_j|_F / |B_j|_F (how far
-/// the stitch had to move tet j from its blended map; 0 where the blended
-/// maps were already compatible). The nonlinear stitch runs when the
-/// blender was made with it (makeBlender).
+/// Blends `weights` with `method` on a prepared `blender` and computes the
+/// per-tet quality of the result (tetQuality, with F_j = grad_j x), as cell
+/// arrays: "volume_ratio" det F_j (1 = volume kept, <= 0 = inverted),
+/// "inverted" (1 or 0), "distortion" sigma_max / sigma_min of F_j (1 = no
+/// shape change), "rotation_angle" of the polar rotation of F_j in radians
+/// (NaN where inverted) and, for the methods with per-tet targets,
+/// "target_residual" ||F_j - B_j||_F (how far the stitch had to move tet j
+/// from its blended map; 0 where the blended maps were already compatible).
+/// The nonlinear stitch runs when the blender was made with it (makeBlender).
 /// Not safe to call concurrently on one blender.
 BlendedShape blendShape(const ShapeBlender& blender, const std::vector<double>& weights,
                         BlendMethod method);
 
-/// Column names and values of a QualitySummary, in table order.
+/// Column names and values of a QualitySummary, in table order:
+/// min/max_volume_ratio, inverted_tets, mean/max_target_residual,
+/// mean/max_distortion, mean/max_rotation_angle (radians). A value that is
+/// not finite (no targets for vertex-linear; a flat tet makes the distortion
+/// infinite) is left out, so tables show it as missing; inverted_tets tells
+/// the flat and inverted tets apart.
 std::vector<std::pair<std::string, double>> qualityColumns(const QualitySummary& quality);
 
 }  // namespace tetblend::cli
