@@ -8,14 +8,27 @@
 //   vertex_linear_ms             one vertex-linear blend (mean of 20)
 //   x_refactor, x_vertex_linear  ratios to the prepared blend's time
 //   prepare_s                    ShapeBlender construction, once
-//   maxrss_B_per_tet             process peak RSS (ru_maxrss) / tets
+//   rss_B_per_tet                growth of the resident set from before the
+//                                model was built to after the blends (both
+//                                after malloc_trim, before the refactor
+//                                comparison) / tets: the prepared blender's
+//                                steady memory plus the bench's own rest and
+//                                example copies and one BlendResult
+//   maxrss_B_per_tet             process peak RSS (ru_maxrss) / tets, which
+//                                includes preparation and the refactor's
+//                                second factor
+//   factor_nnz                   stored entries of the stitch's Cholesky factor
 // Run: bench_blending [--benchmark_filter=...]
 
 #include <benchmark/benchmark.h>
 #include <sys/resource.h>
 
+#include <malloc.h>
+#include <unistd.h>
+
 #include <chrono>
 #include <cmath>
+#include <fstream>
 #include <map>
 #include <memory>
 
@@ -37,11 +50,21 @@ double peakRssBytes() {
   return 1024.0 * static_cast<double>(usage.ru_maxrss);  // Linux: kilobytes
 }
 
+// Resident set now, after returning freed heap pages to the system.
+double currentRssBytes() {
+  malloc_trim(0);
+  std::ifstream statm("/proc/self/statm");
+  double pages = 0.0, resident = 0.0;
+  statm >> pages >> resident;
+  return resident * static_cast<double>(sysconf(_SC_PAGESIZE));
+}
+
 struct Model {
   TetMesh rest;
   std::vector<Vertices> examples;
   std::unique_ptr<ShapeBlender> blender;
   double prepareSeconds = 0.0;
+  double rssBeforeBytes = 0.0;  // resident set before the model was built
 };
 
 // nx = ny = n, nz = 2.6 n cubes of 6 tets: 6 * 2.6 n^3 tets.
@@ -50,7 +73,9 @@ Model& model(int n, BlendMethod method) {
   auto& slot = cache[{n, method}];
   if (slot) return *slot;
   cache.clear();  // keep one model alive at a time: the RSS counter measures one
+  const double rssBefore = currentRssBytes();
   auto m = std::make_unique<Model>();
+  m->rssBeforeBytes = rssBefore;
   const int nz = static_cast<int>(std::lround(2.6 * n));
   const double length = 2.6;
   m->rest = boxTetMesh(n, n, nz, Eigen::Vector3d(1.0, 1.0, length));
@@ -89,6 +114,7 @@ void blendBenchmark(benchmark::State& state, BlendMethod method) {
     benchmark::DoNotOptimize(result.vertices.data());
   }
   const double perBlend = (blend + rhs + solve) / count;
+  const double steadyRss = currentRssBytes();
   // Same run, outside the timed loop: vertex-linear and a refactored solve.
   BlendResult linear;
   const auto linearStart = Clock::now();
@@ -113,6 +139,7 @@ void blendBenchmark(benchmark::State& state, BlendMethod method) {
   state.counters["x_refactor"] = refactor / perBlend;
   state.counters["x_vertex_linear"] = perBlend / vertexLinear;
   state.counters["prepare_s"] = m.prepareSeconds;
+  state.counters["rss_B_per_tet"] = (steadyRss - m.rssBeforeBytes) / tets;
   state.counters["maxrss_B_per_tet"] = peakRssBytes() / tets;
 }
 
