@@ -2,13 +2,11 @@
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
-#include <tbb/parallel_invoke.h>
 
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>
 #include <algorithm>
 #include <chrono>
-#include <cmath>
 #include <numeric>
 #include <sstream>
 
@@ -16,7 +14,7 @@
 #include "tetblend/core/tet_geometry.h"
 
 #ifdef TETBLEND_HAVE_CHOLMOD
-#include <cholmod.h>
+#include "supernodal_factor.h"
 #endif
 
 namespace tetblend {
@@ -60,232 +58,18 @@ struct StitchSolver::Impl {
   StitchBackend backend = StitchBackend::kEigenSimplicialLdlt;
   Eigen::SimplicialLDLT<SparseMatrix, Eigen::Lower, Eigen::AMDOrdering<int>> ldlt;
 #ifdef TETBLEND_HAVE_CHOLMOD
-  // Supernodal LL^T of the reduced matrix; CHOLMOD's default ordering
-  // strategy (AMD, and METIS as well when AMD's fill is high, keeping the
-  // sparser factor). Only read after construction.
-  cholmod_common common{};
-  cholmod_factor* cholmodFactor = nullptr;
-  bool commonStarted = false;
-  std::vector<int> factorRow;      // free vertex r -> row of the permuted system
-  std::vector<int> factorVertex;   // row of the permuted system -> vertex
-  Eigen::Index maxUpdateRows = 0;  // largest off-diagonal block of a supernode
-  int top = 0;                     // see findSplit
-  int low = 0;
-  int split = 0;
-
-  // Solves L L^T y = b in place on `y` (permuted order, #free by 3) from the
-  // supernodal factor's blocks, reading L only: each supernode's diagonal
-  // block is a dense triangular solve and its off-diagonal block one
-  // column-by-column update of the three right-hand sides, reading L once per
-  // pass. (CHOLMOD's own solve goes through the
-  // BLAS, whose narrow three-column kernels were the bottleneck here, and
-  // writes its cholmod_common, which would make concurrent solves race.)
-  // Forward substitution L y = b over supernodes [begin, end); updates of
-  // rows >= sharedRow go to `shared` (rows relative to sharedRow) instead.
-  void forward(int begin, int end, double* yv, double* u, int sharedRow, double* shared) const {
-    const cholmod_factor& f = *cholmodFactor;
-    const auto* super = static_cast<const int*>(f.super);
-    const auto* pi = static_cast<const int*>(f.pi);
-    const auto* px = static_cast<const int*>(f.px);
-    const auto* rowIndex = static_cast<const int*>(f.s);
-    const auto* values = static_cast<const double*>(f.x);
-    for (int s = begin; s < end; ++s) {
-      const int first = super[s], columns = super[s + 1] - first;
-      const int height = pi[s + 1] - pi[s], below = height - columns;
-      const double* block = values + px[s];  // column-major, height by columns
-      double* x = yv + 3 * static_cast<Eigen::Index>(first);
-      std::fill(u, u + 3 * below, 0.0);
-      for (int c = 0; c < columns; ++c) {
-        const double* column = block + static_cast<Eigen::Index>(c) * height;
-        const double inverse = 1.0 / column[c];
-        const double x0 = x[3 * c] *= inverse, x1 = x[3 * c + 1] *= inverse,
-                     x2 = x[3 * c + 2] *= inverse;
-        for (int i = c + 1; i < columns; ++i) {
-          x[3 * i] -= column[i] * x0;
-          x[3 * i + 1] -= column[i] * x1;
-          x[3 * i + 2] -= column[i] * x2;
-        }
-        const double* lower = column + columns;
-        for (int i = 0; i < below; ++i) {
-          u[3 * i] += lower[i] * x0;
-          u[3 * i + 1] += lower[i] * x1;
-          u[3 * i + 2] += lower[i] * x2;
-        }
-      }
-      const int* target = rowIndex + pi[s] + columns;
-      for (int i = 0; i < below; ++i) {
-        double* row = target[i] < sharedRow
-                          ? yv + 3 * static_cast<Eigen::Index>(target[i])
-                          : shared + 3 * static_cast<Eigen::Index>(target[i] - sharedRow);
-        row[0] -= u[3 * i];
-        row[1] -= u[3 * i + 1];
-        row[2] -= u[3 * i + 2];
-      }
-    }
-  }
-
-  // Back substitution L^T x = y over supernodes [begin, end), in reverse.
-  void backward(int begin, int end, double* yv, double* u) const {
-    const cholmod_factor& f = *cholmodFactor;
-    const auto* super = static_cast<const int*>(f.super);
-    const auto* pi = static_cast<const int*>(f.pi);
-    const auto* px = static_cast<const int*>(f.px);
-    const auto* rowIndex = static_cast<const int*>(f.s);
-    const auto* values = static_cast<const double*>(f.x);
-    for (int s = end - 1; s >= begin; --s) {
-      const int first = super[s], columns = super[s + 1] - first;
-      const int height = pi[s + 1] - pi[s], below = height - columns;
-      const double* block = values + px[s];
-      double* x = yv + 3 * static_cast<Eigen::Index>(first);
-      const int* source = rowIndex + pi[s] + columns;
-      for (int i = 0; i < below; ++i) {
-        const double* row = yv + 3 * static_cast<Eigen::Index>(source[i]);
-        u[3 * i] = row[0];
-        u[3 * i + 1] = row[1];
-        u[3 * i + 2] = row[2];
-      }
-      for (int c = columns - 1; c >= 0; --c) {
-        const double* column = block + static_cast<Eigen::Index>(c) * height;
-        double x0 = x[3 * c], x1 = x[3 * c + 1], x2 = x[3 * c + 2];
-        for (int i = c + 1; i < columns; ++i) {
-          x0 -= column[i] * x[3 * i];
-          x1 -= column[i] * x[3 * i + 1];
-          x2 -= column[i] * x[3 * i + 2];
-        }
-        const double* lower = column + columns;
-        for (int i = 0; i < below; ++i) {
-          x0 -= lower[i] * u[3 * i];
-          x1 -= lower[i] * u[3 * i + 1];
-          x2 -= lower[i] * u[3 * i + 2];
-        }
-        const double inverse = 1.0 / column[c];
-        x[3 * c] = x0 * inverse;
-        x[3 * c + 1] = x1 * inverse;
-        x[3 * c + 2] = x2 * inverse;
-      }
-    }
-  }
-
-  // Solves L L^T y = b in place on `y` (permuted order, #free by 3). Below
-  // the split supernode `top` (found by findSplit) the elimination tree's
-  // postordered supernodes [low, split) and [split, top) are disjoint
-  // subtrees that share only the rows of top and its ancestors, so they run
-  // on two threads; the forward pass sends their updates of rows >= the
-  // first column of `top` to per-half buffers, added in a fixed order after
-  // (deterministic). Supernodes outside top's subtree run sequentially.
-  void supernodalSolve(RowMatrix3& y, RowMatrix3 (&update)[2], RowMatrix3 (&shared)[2]) const {
-    const auto nsuper = static_cast<int>(cholmodFactor->nsuper);
-    const auto* super = static_cast<const int*>(cholmodFactor->super);
-    for (auto& u : update) u.resize(maxUpdateRows, 3);
-    double* yv = y.data();
-    const auto n = static_cast<int>(y.rows());
-    if (split <= 0) {
-      forward(0, nsuper, yv, update[0].data(), n, nullptr);
-      backward(0, nsuper, yv, update[0].data());
-      return;
-    }
-    const int topRow = super[top];
-    for (auto& b : shared) b.setZero(n - topRow, 3);
-    forward(0, low, yv, update[0].data(), n, nullptr);
-    tbb::parallel_invoke(
-        [&] { forward(low, split, yv, update[0].data(), topRow, shared[0].data()); },
-        [&] { forward(split, top, yv, update[1].data(), topRow, shared[1].data()); });
-    y.bottomRows(n - topRow) += shared[0];
-    y.bottomRows(n - topRow) += shared[1];
-    forward(top, nsuper, yv, update[0].data(), n, nullptr);
-    backward(top, nsuper, yv, update[0].data());
-    tbb::parallel_invoke([&] { backward(low, split, yv, update[0].data()); },
-                         [&] { backward(split, top, yv, update[1].data()); });
-    backward(0, low, yv, update[0].data());
-  }
-
-  // Chooses `top`, `low` and `split`: from the last root, descend into the
-  // largest child subtree while it holds more than 2/3 of the entries, then
-  // split top's child subtrees [low, top) at the boundary closest to half of
-  // their entries. split = 0 (sequential) when no balanced split exists.
-  void findSplit() {
-    const cholmod_factor& f = *cholmodFactor;
-    const auto nsuper = static_cast<int>(f.nsuper);
-    const auto* super = static_cast<const int*>(f.super);
-    const auto* pi = static_cast<const int*>(f.pi);
-    const auto* px = static_cast<const int*>(f.px);
-    const auto* rowIndex = static_cast<const int*>(f.s);
-    if (nsuper < 3) return;
-    std::vector<int> column(f.n), parent(nsuper, -1), first(nsuper);
-    for (int s = 0; s < nsuper; ++s) {
-      first[s] = s;
-      for (int c = super[s]; c < super[s + 1]; ++c) column[c] = s;
-    }
-    for (int s = 0; s < nsuper; ++s) {
-      const int columns = super[s + 1] - super[s];
-      if (pi[s + 1] - pi[s] == columns) continue;
-      parent[s] = column[rowIndex[pi[s] + columns]];
-      if (parent[s] <= s) return;  // not postordered: stay sequential
-      first[parent[s]] = std::min(first[parent[s]], first[s]);
-    }
-    const auto entries = [&](int s) { return double(px[s + 1]) - px[first[s]]; };
-    int node = nsuper - 1;
-    for (;;) {
-      int largest = -1;
-      for (int s = first[node]; s < node; ++s) {
-        if (parent[s] == node && (largest < 0 || entries(s) > entries(largest))) largest = s;
-      }
-      if (largest < 0) return;
-      if (entries(largest) * 3.0 <= entries(node) * 2.0) break;
-      node = largest;
-    }
-    const double half = 0.5 * (double(px[node]) + px[first[node]]);
-    int best = 0;
-    for (int s = first[node]; s + 1 < node; ++s) {
-      if (parent[s] != node) continue;
-      if (best == 0 || std::abs(px[s + 1] - half) < std::abs(px[best] - half)) best = s + 1;
-    }
-    if (best <= first[node] || best >= node) return;
-    top = node;
-    low = first[node];
-    split = best;
-  }
+  std::unique_ptr<stitch_detail::SupernodalFactor> supernodal;
+  std::vector<int> factorRow;     // free vertex r -> row of the permuted system
+  std::vector<int> factorVertex;  // row of the permuted system -> vertex
 
   void factorCholmod(SparseMatrix& matrix) {
-    cholmod_start(&common);
-    commonStarted = true;
-    common.print = 0;  // library code never prints; failures are thrown below
-    common.supernodal = CHOLMOD_SUPERNODAL;
-    cholmod_sparse view{};
-    view.nrow = view.ncol = static_cast<size_t>(matrix.rows());
-    view.nzmax = static_cast<size_t>(matrix.nonZeros());
-    view.p = matrix.outerIndexPtr();
-    view.i = matrix.innerIndexPtr();
-    view.x = matrix.valuePtr();
-    view.stype = -1;  // lower triangle stored
-    view.itype = CHOLMOD_INT;
-    view.xtype = CHOLMOD_REAL;
-    view.dtype = CHOLMOD_DOUBLE;
-    view.sorted = 1;
-    view.packed = 1;
-    cholmodFactor = cholmod_analyze(&view, &common);
-    if (cholmodFactor == nullptr || !cholmod_factorize(&view, cholmodFactor, &common) ||
-        common.status != CHOLMOD_OK || cholmodFactor->minor < cholmodFactor->n) {
-      throw NumericalError(
-          "stitch: CHOLMOD could not factor G^T W G (the rest mesh may have near-degenerate "
-          "tets)");
-    }
-    if (!cholmodFactor->is_super || !cholmodFactor->is_ll) {
-      throw NumericalError("stitch: CHOLMOD did not return a supernodal LL^T factor");
-    }
-    const auto* perm = static_cast<const int*>(cholmodFactor->Perm);
+    supernodal = std::make_unique<stitch_detail::SupernodalFactor>(matrix);
+    const int* perm = supernodal->perm();
     factorRow.resize(freeVertices.size());
     factorVertex.resize(freeVertices.size());
     for (size_t k = 0; k < freeVertices.size(); ++k) {
       factorRow[perm[k]] = static_cast<int>(k);
       factorVertex[k] = freeVertices[perm[k]];
-    }
-    findSplit();
-    const auto* super = static_cast<const int*>(cholmodFactor->super);
-    const auto* pi = static_cast<const int*>(cholmodFactor->pi);
-    for (size_t s = 0; s < cholmodFactor->nsuper; ++s) {
-      maxUpdateRows =
-          std::max<Eigen::Index>(maxUpdateRows, (pi[s + 1] - pi[s]) - (super[s + 1] - super[s]));
     }
   }
 #endif
@@ -393,8 +177,9 @@ struct StitchWorkspace::Impl {
   // per free vertex: in the factor's (permuted) order for CHOLMOD, in
   // reduced order for SimplicialLDLT.
   RowMatrix3 values;
-  RowMatrix3 update[2];  // one supernode's L21 * X, per half of the tree
-  RowMatrix3 shared[2];  // each half's forward updates of the top rows
+#ifdef TETBLEND_HAVE_CHOLMOD
+  stitch_detail::SupernodalWorkspace workspace;
+#endif
   Eigen::Matrix<double, Eigen::Dynamic, 3> solution;  // SimplicialLDLT backend only
 };
 
@@ -439,7 +224,7 @@ StitchBackend StitchSolver::backend() const { return impl_->backend; }
 
 double StitchSolver::factorNonzeros() const {
 #ifdef TETBLEND_HAVE_CHOLMOD
-  if (impl_->cholmodFactor != nullptr) return static_cast<double>(impl_->cholmodFactor->xsize);
+  if (impl_->supernodal) return impl_->supernodal->nonzeros();
 #endif
   return static_cast<double>(impl_->ldlt.matrixL().nestedExpression().nonZeros());
 }
@@ -492,7 +277,7 @@ void StitchSolver::solveInto(const std::vector<Eigen::Matrix3d>& targets,
     m.assembleRhs(targets, m.factorRow, w.values);
     if (timings != nullptr) timings->rhsSeconds = secondsSince(start);
     start = Clock::now();
-    m.supernodalSolve(w.values, w.update, w.shared);
+    m.supernodal->solve(w.values, w.workspace);
     for (Eigen::Index k = 0; k < freeCount; ++k) result.row(m.factorVertex[k]) = w.values.row(k);
   }
 #endif

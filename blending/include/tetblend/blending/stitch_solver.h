@@ -42,9 +42,9 @@ struct StitchTimings {
 
 class StitchSolver;
 
-/// Dense buffers of one stitch solve (right-hand side, solution, CHOLMOD's
-/// solve workspace). Reusing one across solves of the same solver avoids
-/// reallocating them; one workspace must not be used by two threads at once.
+/// Dense buffers of one stitch solve (right-hand side and solution in the
+/// factor's row order, the supernodal solve's scratch). Reusing one across solves of the same
+/// solver avoids reallocating them; one workspace must not be used by two threads at once.
 class StitchWorkspace {
  public:
   StitchWorkspace();
@@ -65,9 +65,11 @@ class StitchWorkspace {
 /// translated so that its vertex centroid (mean of its vertices) equals the
 /// centroid the caller asks for. solveInto is deterministic (the parallel
 /// right-hand side sums each vertex's tets in a fixed order) and safe to call
-/// concurrently on one solver: the factor is only read, and every call solves
-/// in its own StitchWorkspace (its own cholmod_common and dense buffers for
-/// cholmod_solve2), so no lock is taken.
+/// concurrently on one solver: the factor is only read (the supernodal solve
+/// is tetblend's own, not cholmod_solve, which writes its cholmod_common),
+/// and every call solves in its own StitchWorkspace, so no lock is taken.
+/// The solve runs the two halves of the elimination tree below a balanced
+/// split on two threads (TBB).
 class StitchSolver {
  public:
   /// Builds the gradient operator of `rest` (#V by 3 vertices, #T by 4 tets)
@@ -109,7 +111,8 @@ class StitchSolver {
                  Vertices& result, StitchTimings* timings = nullptr) const;
 
   /// As solveInto, solving in the caller's `workspace` (x, y and z as one
-  /// three-column CHOLMOD solve of the reduced system, no factor copy).
+  /// three-column solve of the reduced system, pinned vertices eliminated;
+  /// the right-hand side is assembled directly in the factor's row order).
   void solveInto(const std::vector<Eigen::Matrix3d>& targets, const Centroids& centroids,
                  Vertices& result, StitchWorkspace& workspace,
                  StitchTimings* timings = nullptr) const;
