@@ -68,7 +68,82 @@ PolarDecomposition polarDecompose(const Eigen::Matrix3d& a) {
   throw NumericalError(msg.str());
 }
 
+namespace polar_detail {
+
+bool polarLogClosedForm(const Eigen::Matrix3d& a, PolarLogDecomposition& out) {
+  const Eigen::Matrix3d m = a.transpose() * a;
+  const Eigen::Vector3d mu = symEigenvalues(m);
+  if (!(mu(2) > 0.0) || !(mu(0) <= kClosedFormMaxCond * kClosedFormMaxCond * mu(2))) return false;
+  Eigen::Matrix3d v = Eigen::Matrix3d::Identity();
+  if (mu(0) > mu(2)) {
+    // The eigenvalue farther from the middle one is separated from the other
+    // two by at least half the spread: its eigenvector is well determined.
+    const int iso = mu(0) - mu(1) >= mu(1) - mu(2) ? 0 : 2;
+    Eigen::Matrix3d shifted = m;
+    shifted.diagonal().array() -= mu(iso);
+    const Eigen::Vector3d r0 = shifted.row(0), r1 = shifted.row(1), r2 = shifted.row(2);
+    const Eigen::Vector3d c01 = r0.cross(r1), c02 = r0.cross(r2), c12 = r1.cross(r2);
+    const double n01 = c01.squaredNorm(), n02 = c02.squaredNorm(), n12 = c12.squaredNorm();
+    const Eigen::Vector3d& best = n01 >= n02 ? (n01 >= n12 ? c01 : c12) : (n02 >= n12 ? c02 : c12);
+    const double bestNorm = std::sqrt(best.squaredNorm());
+    if (!(bestNorm > 0.0)) return false;
+    const Eigen::Vector3d w = best / bestNorm;
+    // Orthonormal basis (p, q) of the complement of w, then the middle
+    // eigenvector from the 2x2 problem B = [p q]^T M [p q].
+    Eigen::Vector3d p = std::abs(w.x()) > std::abs(w.y()) ? Eigen::Vector3d(-w.z(), 0.0, w.x())
+                                                          : Eigen::Vector3d(0.0, w.z(), -w.y());
+    p.normalize();
+    const Eigen::Vector3d q = w.cross(p);
+    const Eigen::Vector3d mp = m * p, mq = m * q;
+    const double b00 = p.dot(mp), b01 = p.dot(mq), b11 = q.dot(mq);
+    // Jacobi rotation diagonalising B (Golub & Van Loan, Alg. 8.4.1): its
+    // eigenvectors (c, -s), (s, c) are exact to ulps whatever the gap, while
+    // the cubic's split of a near-double eigenvalue is only sqrt(eps) accurate.
+    double t = 0.0;
+    if (b01 != 0.0) {
+      const double tau = (b11 - b00) / (2.0 * b01);
+      t = (tau >= 0.0 ? 1.0 : -1.0) / (std::abs(tau) + std::sqrt(1.0 + tau * tau));
+    }
+    const double c = 1.0 / std::sqrt(1.0 + t * t), s = t * c;
+    const Eigen::Vector3d e0 = c * p - s * q, e1 = s * p + c * q;
+    const bool e0Larger = b00 - t * b01 >= b11 + t * b01;
+    // Middle eigenvector: the larger of the pair if w is the top one, else the smaller.
+    const Eigen::Vector3d& middle = (iso == 0) == e0Larger ? e0 : e1;
+    v.col(1) = middle;
+    if (iso == 0) {
+      v.col(0) = w;
+      v.col(2) = w.cross(middle);
+    } else {
+      v.col(2) = w;
+      v.col(0) = middle.cross(w);
+    }
+  }
+  const Eigen::Matrix3d av = a * v;
+  const Eigen::Vector3d sigma(av.col(0).norm(), av.col(1).norm(), av.col(2).norm());
+  Eigen::Matrix3d u;
+  u.col(0) = av.col(0) / sigma(0);
+  const Eigen::Vector3d u1 = av.col(1) - u.col(0).dot(av.col(1)) * u.col(0);
+  u.col(1) = u1.normalized();
+  u.col(2) = u.col(0).cross(u.col(1));
+  const Eigen::Matrix3d residual = a - u * sigma.asDiagonal() * v.transpose();
+  if (!(residual.squaredNorm() <=
+        kClosedFormMaxResidual * kClosedFormMaxResidual * a.squaredNorm())) {
+    return false;
+  }
+  out.rotation = u * v.transpose();
+  const Eigen::Matrix3d logS = v * sigma.array().log().matrix().asDiagonal() * v.transpose();
+  out.stretchLog = 0.5 * (logS + logS.transpose());
+  return true;
+}
+
+}  // namespace polar_detail
+
 PolarLogDecomposition polarDecomposeLog(const Eigen::Matrix3d& a) {
+  const double detA = a.determinant();
+  if (a.allFinite() && detA > 0.0) {
+    PolarLogDecomposition fast;
+    if (polar_detail::polarLogClosedForm(a, fast)) return fast;
+  }
   const PolarDecomposition polar = polarDecompose(a);
   return {polar.rotation, symLog(polar.stretch)};
 }

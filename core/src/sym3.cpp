@@ -76,6 +76,7 @@ Eigen::Matrix3d symExp(const Eigen::Matrix3d& y) {
   // Newton form of the interpolating quadratic at the nodes (0, l1, l3) of
   // exp(x + lambda2): exp(Y) = e^lambda2 (I + b Z + c Z^2), Z = Y - lambda2 I,
   // with c = exp[0, l1, l3] and b = exp[0, l1] - l1 c (eq. (4)).
+  const double e1 = expDivided(l1);
   double c;
   if (h < sym3_detail::kExpSeriesSpread) {
     // exp[0, l1, l3] = sum_k h_k(l1, l3) / (k + 2)!, h_k complete homogeneous;
@@ -83,9 +84,9 @@ Eigen::Matrix3d symExp(const Eigen::Matrix3d& y) {
     c = 0.5 + (l1 + l3) / 6.0 + (l1 * l1 + l1 * l3 + l3 * l3) / 24.0 +
         (l1 + l3) * (l1 * l1 + l3 * l3) / 120.0;
   } else {
-    c = (expDivided(l1) - expDivided(l3)) / h;
+    c = (e1 - expDivided(l3)) / h;
   }
-  const double b = expDivided(l1) - l1 * c;
+  const double b = e1 - l1 * c;
   Eigen::Matrix3d z = y;
   z.diagonal().array() -= lambda(1);
   z(1, 0) = z(0, 1);

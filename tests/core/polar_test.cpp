@@ -108,6 +108,86 @@ TEST(Polar, StretchLogMatchesSvdOracle) {
   }
 }
 
+/// Checks a closed-form result against the SVD oracle: R orthonormal with det
+/// +1, R exp(log S) = A, and both factors within eps * cond of U V^T and
+/// V log(Sigma) V^T (as for the Newton path).
+void expectClosedFormMatchesSvd(const Eigen::Matrix3d& a, const PolarLogDecomposition& p,
+                                double cond) {
+  const Eigen::Matrix3d& r = p.rotation;
+  ASSERT_TRUE(r.allFinite() && p.stretchLog.allFinite());
+  EXPECT_LE((r.transpose() * r - Eigen::Matrix3d::Identity()).norm(), kFactorTol);
+  EXPECT_NEAR(r.determinant(), 1.0, kFactorTol);
+  const Eigen::JacobiSVD<Eigen::Matrix3d> svd(a, Eigen::ComputeFullU | Eigen::ComputeFullV);
+  const Eigen::Matrix3d v = svd.matrixV();
+  const Eigen::Matrix3d logOracle =
+      v * svd.singularValues().array().log().matrix().asDiagonal() * v.transpose();
+  EXPECT_LE((r - svd.matrixU() * v.transpose()).norm(), kForwardTolPerCond * cond);
+  EXPECT_LE((p.stretchLog - logOracle).norm(), kForwardTolPerCond * cond * 10);
+  const Eigen::Matrix3d stretch =
+      v * svd.singularValues().asDiagonal() * v.transpose();  // oracle S
+  EXPECT_LE(relativeError(r * stretch, a), kForwardTolPerCond * cond);
+}
+
+TEST(Polar, ClosedFormTakenUpToTheCondThreshold) {
+  // Both sides of polar_detail::kClosedFormMaxCond: accepted (and accurate)
+  // just below, declined just above, where polarDecomposeLog falls back to
+  // Newton and stays accurate.
+  constexpr double kMaxCond = polar_detail::kClosedFormMaxCond;
+  std::mt19937 rng(testSeed("Polar.ClosedFormTakenUpToTheCondThreshold"));
+  for (double cond : {1.0, 3.0, 10.0, 0.9 * kMaxCond}) {
+    for (int i = 0; i < 200; ++i) {
+      const double scale = std::exp(core_test::uniform(rng, -6, 6));
+      const Eigen::Matrix3d a = randomMatrixWithCond(rng, cond, scale);
+      SCOPED_TRACE(testing::Message() << "cond " << cond << " A =\n" << a);
+      PolarLogDecomposition p;
+      ASSERT_TRUE(polar_detail::polarLogClosedForm(a, p));
+      expectClosedFormMatchesSvd(a, p, cond);
+      if (HasFailure()) return;
+    }
+  }
+  for (int i = 0; i < 50; ++i) {
+    const Eigen::Matrix3d a = randomMatrixWithCond(rng, 1.1 * kMaxCond);
+    PolarLogDecomposition p;
+    ASSERT_FALSE(polar_detail::polarLogClosedForm(a, p));
+    expectClosedFormMatchesSvd(a, polarDecomposeLog(a), 1.1 * kMaxCond);
+  }
+}
+
+TEST(Polar, ClosedFormOnCoincidentSingularValues) {
+  // Double and triple singular values, exact and split by 1e-9 or 1e-7: the
+  // eigenvectors are then arbitrary in the degenerate space, the factors not.
+  const Eigen::Matrix3d rot =
+      Eigen::AngleAxisd(2.0, Eigen::Vector3d(1, -2, 0.5).normalized()).toRotationMatrix();
+  const Eigen::Matrix3d basis =
+      Eigen::AngleAxisd(0.7, Eigen::Vector3d(0.3, 1, -1).normalized()).toRotationMatrix();
+  const std::vector<Eigen::Vector3d> spectra = {
+      {1, 1, 1}, {2, 2, 0.5},        {2, 0.5, 0.5},        {1, 1 + 1e-9, 1 - 1e-9},
+      {3, 3, 3}, {2, 2 + 1e-7, 0.5}, {2, 0.5 + 1e-9, 0.5}, {50, 50, 1}};
+  for (const Eigen::Vector3d& sigma : spectra) {
+    for (const Eigen::Matrix3d& a :
+         {Eigen::Matrix3d(sigma.asDiagonal()),
+          Eigen::Matrix3d(rot * basis * sigma.asDiagonal() * basis.transpose())}) {
+      SCOPED_TRACE(testing::Message() << "A =\n" << a);
+      PolarLogDecomposition p;
+      ASSERT_TRUE(polar_detail::polarLogClosedForm(a, p));
+      expectClosedFormMatchesSvd(a, p, sigma.maxCoeff() / sigma.minCoeff());
+    }
+  }
+}
+
+TEST(Polar, ClosedFormResidualCheckRejectsAReflection) {
+  // The a-posteriori residual (polar_detail::kClosedFormMaxResidual) is what
+  // rejects a well-conditioned A the closed form cannot represent: with
+  // det A < 0, u3 = u1 x u2 is -A v3 / sigma3 and the residual is 2 sigma3.
+  const Eigen::Matrix3d rot =
+      Eigen::AngleAxisd(1.0, Eigen::Vector3d(0, 1, 1).normalized()).toRotationMatrix();
+  PolarLogDecomposition p;
+  EXPECT_FALSE(polar_detail::polarLogClosedForm(
+      rot * Eigen::Vector3d(2, 1, -0.5).asDiagonal().toDenseMatrix(), p));
+  EXPECT_TRUE(polar_detail::polarLogClosedForm(
+      rot * Eigen::Vector3d(2, 1, 0.5).asDiagonal().toDenseMatrix(), p));
+}
+
 TEST(Polar, NonPositiveDeterminantThrows) {
   EXPECT_THROW(polarDecompose(Eigen::Vector3d(1, 1, -1).asDiagonal().toDenseMatrix()),
                DomainError);  // reflection

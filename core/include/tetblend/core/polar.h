@@ -28,10 +28,36 @@ struct PolarLogDecomposition {
 /// returned), NumericalError if the iteration fails to converge.
 PolarDecomposition polarDecompose(const Eigen::Matrix3d& a);
 
-/// Rotation factor of A and log S computed from the eigen-decomposition of the
-/// polar factor S = V Sigma V^T (Sigma = singular values of A), so the
-/// logarithm of a stretch with a tiny singular value keeps its accuracy
-/// (Kaji–Ochiai eq. (3), psi_S). Same errors as polarDecompose.
+/// Rotation factor of A and log S = V log(Sigma) V^T (Sigma = singular values
+/// of A; Kaji–Ochiai eq. (3), psi_S). Well-conditioned A (cond <=
+/// polar_detail::kClosedFormMaxCond) takes the closed form of
+/// polar_detail::polarLogClosedForm; otherwise, or if its a-posteriori check
+/// fails, polarDecompose followed by symLog. Same errors as polarDecompose.
 PolarLogDecomposition polarDecomposeLog(const Eigen::Matrix3d& a);
+
+namespace polar_detail {
+/// Largest cond(A) = sigma_1/sigma_3 for the closed form: it diagonalises
+/// A^T A, whose smallest eigenvalue carries an absolute error eps sigma_1^2,
+/// i.e. eps cond^2 relative; at 1e2 that is 2e-12 (then refined by
+/// sigma_i = |A v_i|, second order in the eigenvector error).
+constexpr double kClosedFormMaxCond = 1e2;
+/// A-posteriori acceptance of the closed form: |A - R S|_F <= this * |A|_F
+/// with R orthonormal and S SPD by construction. Backward error this small
+/// bounds the forward error of R by about this * cond(A) (the polar factor's
+/// condition number), so the result is as good as the Newton iteration's.
+constexpr double kClosedFormMaxResidual = 32 * 2.220446049250313e-16;
+
+/// Closed-form polar decomposition with stretch logarithm for
+/// well-conditioned A (3x3, det A > 0 assumed; not checked here): eigenvalues
+/// of A^T A by the trigonometric cubic (symEigenvalues, Kaji–Ochiai §4.1), the
+/// most isolated eigenvector by cross products of the rows of A^T A - mu I,
+/// the other two from the 2x2 problem in its orthogonal complement (Eberly,
+/// "A Robust Eigensolver for 3x3 Symmetric Matrices"), V right-handed;
+/// sigma_i = |A v_i|, U = A V Sigma^-1 re-orthonormalised (Gram–Schmidt,
+/// u3 = u1 x u2), R = U V^T, log S = V log(Sigma) V^T. Returns false (and
+/// leaves `out` unspecified) if cond(A) > kClosedFormMaxCond or the residual
+/// exceeds kClosedFormMaxResidual.
+bool polarLogClosedForm(const Eigen::Matrix3d& a, PolarLogDecomposition& out);
+}  // namespace polar_detail
 
 }  // namespace tetblend

@@ -90,14 +90,13 @@ inline Eigen::Vector3d so3Log(const Eigen::Matrix3d& r) {
     const double f = theta < so3_detail::kSmallAngle ? 1.0 + theta * theta / 6.0 : theta / s;
     return f * v;
   }
-  // (R + R^T)/2 - c I = (1 - c) a a^T; take the best-conditioned column.
-  const Eigen::Matrix3d sym = 0.5 * (r + r.transpose());
-  Eigen::Vector3d d = sym.diagonal().array() - c;
-  int k = 0;
-  d.maxCoeff(&k);
-  Eigen::Vector3d axis = sym.col(k);
-  axis(k) -= c;
-  axis.normalize();
+  // (R + R^T)/2 - c I = (1 - c) a a^T; take its best-conditioned column k
+  // (largest diagonal entry), built without forming the whole matrix.
+  const int k = r(0, 0) >= r(1, 1) ? (r(0, 0) >= r(2, 2) ? 0 : 2) : (r(1, 1) >= r(2, 2) ? 1 : 2);
+  Eigen::Vector3d axis(0.5 * (r(0, k) + r(k, 0)), 0.5 * (r(1, k) + r(k, 1)),
+                       0.5 * (r(2, k) + r(k, 2)));
+  axis(k) = r(k, k) - c;
+  axis /= axis.norm();
   if (axis.dot(v) < 0.0) axis = -axis;
   return theta * axis;
 }
