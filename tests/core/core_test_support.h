@@ -7,26 +7,16 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
-#include <iostream>
 #include <random>
-#include <string>
+
+#include "test_seed.h"
 
 namespace tetblend::core_test {
 
-/// Seed of the random samples: TETBLEND_SEED if set, else a fixed default.
-/// Printed by every test that uses it, so a failure can be replayed.
-inline unsigned testSeed(const char* testName) {
-  constexpr unsigned kDefaultSeed = 20130703u;
-  const char* env = std::getenv("TETBLEND_SEED");
-  const unsigned seed = env ? static_cast<unsigned>(std::stoul(env)) : kDefaultSeed;
-  std::cout << "[ seed     ] " << testName << ": TETBLEND_SEED=" << seed << "\n";
-  return seed;
-}
+using test_seed::uniform;
 
-inline double uniform(std::mt19937& rng, double lo, double hi) {
-  return std::uniform_real_distribution<double>(lo, hi)(rng);
-}
+/// Seed of the random samples (test_seed::seedFor, default 20130703u).
+inline unsigned testSeed(const char* testName) { return test_seed::seedFor(testName, 20130703u); }
 
 inline Eigen::Vector3d randomUnitVector(std::mt19937& rng) {
   std::normal_distribution<double> n;
