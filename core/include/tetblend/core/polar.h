@@ -38,9 +38,11 @@ PolarLogDecomposition polarDecomposeLog(const Eigen::Matrix3d& a);
 namespace polar_detail {
 /// Largest cond(A) = sigma_1/sigma_3 for the closed form: it diagonalises
 /// A^T A, whose smallest eigenvalue carries an absolute error eps sigma_1^2,
-/// i.e. eps cond^2 relative; at 1e2 that is 2e-12 (then refined by
-/// sigma_i = |A v_i|, second order in the eigenvector error).
-constexpr double kClosedFormMaxCond = 1e2;
+/// i.e. eps cond^2 relative (2e-10 at 1e3). sigma_i = |A v_i| is then only
+/// second order in the eigenvector error, and the residual check below
+/// decides acceptance; the bound keeps the closed form within the range the
+/// tests exercise (accepted and accurate at 0.9e3, declined at 1.1e3).
+constexpr double kClosedFormMaxCond = 1e3;
 /// A-posteriori acceptance of the closed form: |A - R S|_F <= this * |A|_F
 /// with R orthonormal and S SPD by construction. Backward error this small
 /// bounds the forward error of R by about this * cond(A) (the polar factor's
