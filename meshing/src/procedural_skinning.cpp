@@ -4,6 +4,8 @@
 #include <string>
 #include <vector>
 
+#include "tetblend/core/dual_quaternion.h"
+#include "tetblend/core/dual_quaternion_blend.h"
 #include "tetblend/core/error.h"
 #include "tetblend/meshing/procedural_shapes.h"
 
@@ -19,22 +21,6 @@ void checkSkinningInput(const Vertices& vertices, const Eigen::MatrixXd& weights
                      std::to_string(vertices.rows()) + " vertices and " +
                      std::to_string(bones.size()) + " bones (need at least one bone)");
   }
-}
-
-// Unit dual quaternion q_r + ε q_d of a rigid motion: q_d = ½ (0, t) q_r
-// (Kavan et al. §3.3).
-struct UnitDualQuaternion {
-  Eigen::Quaterniond real;
-  Eigen::Quaterniond dual;
-};
-
-UnitDualQuaternion toDualQuaternion(const Eigen::Isometry3d& motion) {
-  UnitDualQuaternion q;
-  q.real = Eigen::Quaterniond(motion.linear());
-  const Eigen::Vector3d t = motion.translation();
-  const Eigen::Quaterniond translation(0.0, t.x(), t.y(), t.z());
-  q.dual.coeffs() = 0.5 * (translation * q.real).coeffs();
-  return q;
 }
 
 }  // namespace
@@ -57,36 +43,23 @@ Vertices linearBlendSkinning(const Vertices& vertices, const Eigen::MatrixXd& we
 Vertices dualQuaternionSkinning(const Vertices& vertices, const Eigen::MatrixXd& weights,
                                 const std::vector<Eigen::Isometry3d>& bones) {
   checkSkinningInput(vertices, weights, bones, "dualQuaternionSkinning");
-  std::vector<UnitDualQuaternion> dq;
-  for (const Eigen::Isometry3d& bone : bones) {
-    dq.push_back(toDualQuaternion(bone));
-    // Antipodality: align every bone with the first (shortest path, §3.4).
-    if (dq.back().real.coeffs().dot(dq.front().real.coeffs()) < 0.0) {
-      dq.back().real.coeffs() *= -1.0;
-      dq.back().dual.coeffs() *= -1.0;
-    }
-  }
+  // Unit dual quaternions of the bones (Kavan et al. eq. 1), blended per
+  // vertex by DLB (Kavan et al. §4), which picks the antipodes.
+  std::vector<DualQuaternion> dq;
+  for (const Eigen::Isometry3d& bone : bones)
+    dq.push_back(DualQuaternion::fromRigid(bone.matrix()));
+  std::vector<double> w(bones.size());
   Vertices result(vertices.rows(), 3);
   for (Eigen::Index v = 0; v < vertices.rows(); ++v) {
-    Eigen::Vector4d real = Eigen::Vector4d::Zero();
-    Eigen::Vector4d dual = Eigen::Vector4d::Zero();
-    for (size_t b = 0; b < dq.size(); ++b) {
-      const double w = weights(v, static_cast<Eigen::Index>(b));
-      real += w * dq[b].real.coeffs();
-      dual += w * dq[b].dual.coeffs();
-    }
-    const double norm = real.norm();
-    if (!(norm > 0.0)) {
+    for (std::size_t b = 0; b < dq.size(); ++b) w[b] = weights(v, static_cast<Eigen::Index>(b));
+    DualQuaternion blended;
+    try {
+      blended = dlb(dq, w);
+    } catch (const DomainError&) {
       throw DomainError("dualQuaternionSkinning: blended dual quaternion of vertex " +
                         std::to_string(v) + " has a zero real part (weights cancel)");
     }
-    Eigen::Quaterniond r;
-    r.coeffs() = real / norm;
-    Eigen::Quaterniond d;
-    d.coeffs() = dual / norm;
-    // Translation = vector part of 2 q_d conj(q_r) (Kavan et al. Alg. 1).
-    const Eigen::Vector3d t = 2.0 * (d * r.conjugate()).vec();
-    result.row(v) = (r * vertices.row(v).transpose() + t).transpose();
+    result.row(v) = blended.transformPoint(vertices.row(v).transpose()).transpose();
   }
   return result;
 }
