@@ -1,26 +1,50 @@
-// bench_meshing: compatible tet meshes for a rest bar and 3 examples (2π
-// twist, 180° bend, 170° dual-quaternion-skinned elbow) at about 10k, 100k
-// and 1M tets, split into the one-off factorisation (CompatibleTetBuilder
-// construction) and the per-example placement (harmonic, ARAP, untangling).
-// Counters: tets, ARAP iterations, inverted tets left, peak RSS (getrusage
-// ru_maxrss, whole process so far).
+// bench_meshing: preparing compatible tet meshes for a rest bar and 3 examples
+// (2π twist, 180° bend, 170° dual-quaternion-skinned elbow), split into the
+// stages a user pays for:
+//   read      readSurface of the 4 binary PLY files (written once, untimed);
+//   validate  requireValidRest (incl. CGAL self-intersections) of the rest
+//             and requireCompatibleExample of the 3 examples;
+//   tetgen    tetrahedralize of the rest surface, maxTetVolume chosen for
+//             about 10k, 100k or 1M tets;
+//   embed     CompatibleTetBuilder construction (factorisation) + place() of
+//             each example (harmonic, ARAP, untangling).
+// Counters are milliseconds per stage, embed split into factor_ms and
+// place_ms, the ratio (validate + embed) / tetgen, tets, inverted tets left
+// over all examples, and peak RSS (getrusage ru_maxrss of the whole process so
+// far; sizes run in increasing order, so it is the peak of the largest size
+// run yet). The reported time is the sum of the four stages.
 
 #include <benchmark/benchmark.h>
 #include <sys/resource.h>
+#include <unistd.h>
 
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
 #include <map>
-#include <memory>
+#include <string>
 #include <vector>
 
+#include "tetblend/core/error.h"
 #include "tetblend/meshing/compatible_tets.h"
 #include "tetblend/meshing/procedural_shapes.h"
+#include "tetblend/meshing/surface_io.h"
+#include "tetblend/meshing/surface_validation.h"
 #include "tetblend/meshing/tet_boundary.h"
+#include "tetblend/meshing/tetgen_mesher.h"
 
 namespace tetblend {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-constexpr double kLength = 6.0;
+constexpr double kLength = 6.0;         // bar is kLength × 1 × 1
+constexpr double kBarVolume = kLength;  // units³
+constexpr int kExampleCount = 3;
+// TetGen's tets average about this fraction of the -a bound (measured on this
+// bar with -q2.0), so maxTetVolume = kMeanToMaxVolume⁻¹ · volume / target.
+constexpr double kMeanToMaxVolume = 0.55;
 
 double peakRssMegabytes() {
   rusage usage{};
@@ -28,71 +52,145 @@ double peakRssMegabytes() {
   return static_cast<double>(usage.ru_maxrss) / 1024.0;  // Linux: kilobytes
 }
 
-// Bar of n × n × 6n cubes (36 n³ tets), boundary vertices first.
-const BoundaryFirstMesh& restBar(int n) {
-  static std::map<int, BoundaryFirstMesh> cache;
-  auto it = cache.find(n);
-  if (it == cache.end()) {
-    it = cache
-             .emplace(n, reorderBoundaryFirst(
-                             boxTetMesh(6 * n, n, n, Eigen::Vector3d(kLength, 1.0, 1.0))))
-             .first;
-  }
-  return it->second;
+double millisecondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+      .count();
 }
 
-Vertices exampleSurface(const BoundaryFirstMesh& rest, int example) {
-  const Vertices& v = rest.mesh.vertices;
-  Vertices deformed;
-  if (example == 0) {
-    deformed = twistAboutAxis(v, Eigen::Vector3d(-kLength / 2, 0, 0), Eigen::Vector3d::UnitX(),
-                              2 * kPi, kLength);
-  } else if (example == 1) {
-    deformed = bendAboutAxis(v, Eigen::Vector3d(-kLength / 2, 0, 0), Eigen::Vector3d::UnitX(),
-                             Eigen::Vector3d::UnitY(), kPi, kLength);
-  } else {
-    const Eigen::MatrixXd weights =
-        twoBoneWeights(v, Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitX(), 1.5);
-    deformed = dualQuaternionSkinning(
-        v, weights,
-        {Eigen::Isometry3d::Identity(),
-         rotationAboutLine(Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitZ(), 170 * kPi / 180)});
-  }
-  return deformed.topRows(rest.boundaryVertexCount);
+// Surface cells across the bar's 1 × 1 section for a target tet count: the
+// surface edge then matches the edge of a regular tet of mean volume
+// kBarVolume / target (regular tet volume = a³ / (6√2)).
+int surfaceCellsFor(long long targetTets) {
+  const double meanVolume = kBarVolume / static_cast<double>(targetTets);
+  const double edge = std::cbrt(meanVolume * 6.0 * std::sqrt(2.0));
+  return std::max(2, static_cast<int>(std::lround(1.0 / edge)));
 }
 
-void BM_Factorise(benchmark::State& state) {
-  const BoundaryFirstMesh& rest = restBar(static_cast<int>(state.range(0)));
+// Directory holding the four surface files, removed at exit.
+class TempDir {
+ public:
+  TempDir() {
+    std::string pattern =
+        (std::filesystem::temp_directory_path() / "bench_meshing_XXXXXX").string();
+    if (mkdtemp(pattern.data()) == nullptr) throw Error("bench_meshing: mkdtemp failed");
+    path_ = pattern;
+  }
+  ~TempDir() {
+    std::error_code ignored;
+    std::filesystem::remove_all(path_, ignored);
+  }
+  const std::filesystem::path& path() const { return path_; }
+
+ private:
+  std::filesystem::path path_;
+};
+
+struct SurfaceFiles {
+  std::string rest;
+  std::vector<std::string> examples;
+};
+
+// Writes (once per size) the rest bar surface of m × m × 6m cells and its 3
+// examples as binary little-endian PLY (exact doubles).
+const SurfaceFiles& surfaceFiles(int cells) {
+  static TempDir dir;
+  static std::map<int, SurfaceFiles> cache;
+  auto it = cache.find(cells);
+  if (it != cache.end()) return it->second;
+
+  const SurfaceMesh full =
+      boundarySurface(boxTetMesh(6 * cells, cells, cells, Eigen::Vector3d(kLength, 1.0, 1.0)));
+  const SurfaceMesh rest = removeVertices(full, unreferencedVertices(full));
+  const Vertices& v = rest.vertices;
+  const Eigen::Vector3d start(-kLength / 2, 0, 0);
+  const Eigen::MatrixXd weights =
+      twoBoneWeights(v, Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitX(), 1.5);
+  const std::vector<Vertices> deformed = {
+      twistAboutAxis(v, start, Eigen::Vector3d::UnitX(), 2 * kPi, kLength),
+      bendAboutAxis(v, start, Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitY(), kPi, kLength),
+      dualQuaternionSkinning(
+          v, weights,
+          {Eigen::Isometry3d::Identity(),
+           rotationAboutLine(Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitZ(), 170 * kPi / 180)})};
+  const std::string prefix = (dir.path() / ("bar" + std::to_string(cells) + "_")).string();
+  SurfaceFiles files;
+  files.rest = prefix + "rest.ply";
+  writeSurface(files.rest, rest);
+  for (int e = 0; e < kExampleCount; ++e) {
+    files.examples.push_back(prefix + "example" + std::to_string(e) + ".ply");
+    writeSurface(files.examples.back(), SurfaceMesh{deformed[e], rest.triangles});
+  }
+  return cache.emplace(cells, std::move(files)).first->second;
+}
+
+void BM_PrepareCompatibleMeshes(benchmark::State& state) {
+  const long long targetTets = state.range(0);
+  const SurfaceFiles& files = surfaceFiles(surfaceCellsFor(targetTets));
+  TetGenOptions tetgenOptions;
+  tetgenOptions.maxTetVolume = kBarVolume / (kMeanToMaxVolume * static_cast<double>(targetTets));
+  tetgenOptions.sourceName = files.rest;
+
+  double readMs = 0, validateMs = 0, tetgenMs = 0, factorMs = 0, placeMs = 0;
+  long long tets = 0, surfaceFaces = 0, invertedLeft = 0;
   for (auto _ : state) {
-    CompatibleTetBuilder builder(rest.mesh, rest.boundaryVertexCount);
-    benchmark::DoNotOptimize(&builder);
+    auto start = std::chrono::steady_clock::now();
+    const SurfaceMesh rest = readSurface(files.rest);
+    std::vector<SurfaceMesh> examples;
+    for (const std::string& path : files.examples) examples.push_back(readSurface(path));
+    readMs = millisecondsSince(start);
+
+    start = std::chrono::steady_clock::now();
+    requireValidRest(rest, files.rest);
+    for (int e = 0; e < kExampleCount; ++e) {
+      requireCompatibleExample(rest, examples[e], files.examples[e]);
+    }
+    validateMs = millisecondsSince(start);
+
+    start = std::chrono::steady_clock::now();
+    const TetMesh restTets = tetrahedralize(rest, tetgenOptions);
+    tetgenMs = millisecondsSince(start);
+
+    // tetrahedralize keeps the input vertices first and in order, so the
+    // surface vertices are rows 0..#S-1 as the builder requires.
+    start = std::chrono::steady_clock::now();
+    const CompatibleTetBuilder builder(restTets, static_cast<int>(rest.vertices.rows()));
+    factorMs = millisecondsSince(start);
+
+    start = std::chrono::steady_clock::now();
+    invertedLeft = 0;
+    for (const SurfaceMesh& example : examples) {
+      const CompatibleTetResult result = builder.place(example.vertices);
+      invertedLeft += static_cast<long long>(result.invertedTets.size());
+      benchmark::DoNotOptimize(result.vertices.data());
+    }
+    placeMs = millisecondsSince(start);
+
+    tets = restTets.tets.rows();
+    surfaceFaces = rest.triangles.rows();
+    state.SetIterationTime((readMs + validateMs + tetgenMs + factorMs + placeMs) / 1000.0);
   }
-  state.counters["tets"] = static_cast<double>(rest.mesh.tets.rows());
+  const double embedMs = factorMs + placeMs;
+  state.counters["tets"] = static_cast<double>(tets);
+  state.counters["surf_faces"] = static_cast<double>(surfaceFaces);
+  state.counters["read_ms"] = readMs;
+  state.counters["validate_ms"] = validateMs;
+  state.counters["tetgen_ms"] = tetgenMs;
+  state.counters["factor_ms"] = factorMs;
+  state.counters["place_ms"] = placeMs;
+  state.counters["embed_ms"] = embedMs;
+  state.counters["val+emb/tetgen"] = (validateMs + embedMs) / tetgenMs;
+  state.counters["inverted_left"] = static_cast<double>(invertedLeft);
   state.counters["peak_rss_MB"] = peakRssMegabytes();
 }
 
-void BM_PlaceExample(benchmark::State& state) {
-  const BoundaryFirstMesh& rest = restBar(static_cast<int>(state.range(0)));
-  const int example = static_cast<int>(state.range(1));
-  const CompatibleTetBuilder builder(rest.mesh, rest.boundaryVertexCount);
-  const Vertices surface = exampleSurface(rest, example);
-  CompatibleTetResult result;
-  for (auto _ : state) {
-    result = builder.place(surface);
-    benchmark::DoNotOptimize(result.vertices.data());
-  }
-  state.counters["tets"] = static_cast<double>(rest.mesh.tets.rows());
-  state.counters["arap_iterations"] = result.arapIterations;
-  state.counters["inverted_left"] = static_cast<double>(result.invertedTets.size());
-  state.counters["harmonic_inverted"] = result.harmonicInvertedCount;
-  state.counters["peak_rss_MB"] = peakRssMegabytes();
-}
-
-// n = 6, 13, 28: 7 776, 79 092 and 790 272 tets.
-BENCHMARK(BM_Factorise)->Arg(6)->Arg(13)->Arg(28)->Unit(benchmark::kMillisecond)->Iterations(1);
-BENCHMARK(BM_PlaceExample)
-    ->ArgsProduct({{6, 13, 28}, {0, 1, 2}})
+// Targets 10k, 100k and 1M tets; the 1M size takes several minutes (see the
+// README), run it with --benchmark_filter=.../1000000.
+BENCHMARK(BM_PrepareCompatibleMeshes)
+    ->Arg(10000)
+    ->Arg(100000)
+    ->Arg(1000000)
     ->Unit(benchmark::kMillisecond)
+    ->UseManualTime()
     ->Iterations(1);
 
 }  // namespace
