@@ -59,12 +59,27 @@ Eigen::Vector3d symEigenvalues(const Eigen::Matrix3d& y) {
   const double det =
       c00 * (c11 * c22 - c12 * c12) - c01 * (c01 * c22 - c12 * c02) + c02 * (c01 * c12 - c11 * c02);
   const double r = std::clamp(0.5 * det, -1.0, 1.0);
-  const double phi = std::acos(r) / 3.0;
-  // cos(phi + 2 pi/3) = -cos(phi)/2 - sin(phi) sqrt(3)/2: one sin/cos pair.
-  constexpr double kHalfSqrt3 = 0.86602540378443864676;
-  const double c = std::cos(phi), s = std::sin(phi);
-  const double l1 = q + 2.0 * p * c;
-  const double l3 = q - p * c - 2.0 * p * kHalfSqrt3 * s;
+  // The eigenvalues of C are the roots of x^3 - 3x - 2r, i.e. 2 cos(acos(r)/3
+  // + 2 pi k/3) (§4.1). Rather than acos and sin/cos, solve for the root that
+  // stays simple on this half of r: x in [sqrt 3, 2], the largest root at |r|
+  // (the largest root for r >= 0, minus the smallest for r < 0), by Halley's
+  // method from a quadratic fit (error < 1.1e-3; f' >= 6 on the interval, so
+  // the cubic convergence takes two steps to round-off: 1e-3 -> 6e-10 -> 1e-27).
+  // Deflation leaves x'^2 + x x' + x^2 - 3 for the pair
+  // x' = (-x +- d)/2, d = sqrt(3 (2 - x)(2 + x)) (signs mirrored for r < 0).
+  const double a = std::abs(r);
+  // Fit: the quadratic through (0, sqrt 3), (1/2, 2 cos(pi/9)), (1, 2).
+  double x = 1.7320508075688774 + a * (0.3213885435806343 - 0.053439351149511705 * a);
+  for (int it = 0; it < 2; ++it) {
+    const double f = x * (x * x - 3.0) - 2.0 * a;
+    const double df = 3.0 * (x * x - 1.0);
+    x -= 2.0 * f * df / (2.0 * df * df - 6.0 * x * f);
+  }
+  const double d = std::sqrt(3.0 * std::max(0.0, (2.0 - x) * (2.0 + x)));
+  const double top = r >= 0.0 ? x : 0.5 * (x + d);
+  const double bottom = r >= 0.0 ? -0.5 * (x + d) : -x;
+  const double l1 = q + p * top;
+  const double l3 = q + p * bottom;
   return Eigen::Vector3d(l1, 3.0 * q - l1 - l3, l3);
 }
 

@@ -24,7 +24,8 @@ using core_test::uniform;
 constexpr double kTolPerSpread = 8e-15;
 // Eigenvalues by the cubic formula, absolute, relative to the spectral radius:
 // a few ulps when distinct; a (near-)double root is split with an error of
-// order sqrt(eps) (acos near +-1), which exp/log do not feel (second order).
+// order sqrt(eps) (the deflated pair sqrt(3 (2 - x)(2 + x)) near x = 2), which
+// exp/log do not feel (second order).
 constexpr double kEigenvalueTol = 1e-14;
 constexpr double kDoubleEigenvalueTol = 1e-7;
 
@@ -77,6 +78,31 @@ TEST(Sym3, EigenvaluesMatchEigenSolver) {
     ASSERT_NEAR(lambda.sum(), y.trace(), kEigenvalueTol * (1 + y.norm()));
   }
   EXPECT_EQ(symEigenvalues(2.0 * Eigen::Matrix3d::Identity()), Eigen::Vector3d(2, 2, 2));
+}
+
+TEST(Sym3, EigenvaluesSeamlessAcrossCubicRootSwitch) {
+  // symEigenvalues solves for the largest root of the normalised cubic when
+  // det(Y - tr(Y)/3 I) >= 0 and for the smallest when it is < 0: spectra
+  // (1, t, -1) sit on either side of that switch as t changes sign.
+  std::mt19937 rng(testSeed("Sym3.EigenvaluesSeamlessAcrossCubicRootSwitch"));
+  int positive = 0, negative = 0;
+  for (const double t : {-0.3, -1e-3, -1e-12, 0.0, 1e-12, 1e-3, 0.3}) {
+    const Eigen::Matrix3d y = spdWithEigenvalues(rng, Eigen::Vector3d(1.0, t, -1.0));
+    const double det = (y - y.trace() / 3.0 * Eigen::Matrix3d::Identity()).determinant();
+    positive += det > 0.0;
+    negative += det < 0.0;
+    const Eigen::Vector3d oracle =
+        Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(y, Eigen::EigenvaluesOnly)
+            .eigenvalues()
+            .reverse();
+    EXPECT_LE((symEigenvalues(y) - oracle).cwiseAbs().maxCoeff(), kEigenvalueTol * (1 + y.norm()))
+        << "t = " << t;
+    const Eigen::Matrix3d expOracle = y.exp();
+    EXPECT_LE(relativeError(symExp(y), expOracle), kTolPerSpread * (1 + spread(oracle)))
+        << "t = " << t;
+  }
+  EXPECT_GT(positive, 0);
+  EXPECT_GT(negative, 0);
 }
 
 TEST(Sym3, ExpMatchesOraclesOnHardSpectra) {
