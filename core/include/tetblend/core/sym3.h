@@ -11,8 +11,10 @@
 
 namespace tetblend {
 
-/// Eigenvalues of a symmetric 3x3 matrix Y in descending order, by the
-/// trigonometric cubic formula (Kaji–Ochiai §4.1). Absolute error a few ulps
+/// Eigenvalues of a symmetric 3x3 matrix Y in descending order, as roots of
+/// the normalised characteristic cubic x^3 - 3x - 2r (Kaji–Ochiai §4.1):
+/// the largest by Halley steps from a quadratic start, the other two by
+/// deflation. Absolute error a few ulps
 /// of the spectral radius for well-separated eigenvalues; a (near-)double
 /// eigenvalue is split with an error of order sqrt(eps) times the radius (the
 /// pair's mean stays accurate). symExp/symLog are insensitive to that split:
