@@ -9,6 +9,7 @@ namespace tetblend {
 namespace {
 
 using blend_detail::forEachTet;
+using blend_detail::homogeneous;
 using blend_detail::restWeight;
 
 // (1 - sum w) I + sum_k w_k F_kj: linear blending of deformation gradients.
@@ -18,10 +19,7 @@ class LinearBlender final : public TetMapBlender {
     const auto sizes = blend_detail::checkInput(input);
     tets_ = sizes.tets;
     examples_ = sizes.examples;
-    maps_.resize(static_cast<size_t>(tets_) * examples_);
-    forEachTet(tets_, [&](int j) {
-      for (int k = 0; k < examples_; ++k) maps_[index(j, k)] = (*input.gradients)[k][j];
-    });
+    maps_ = blend_detail::tetMajorGradients(input, sizes);
   }
   BlendMethod method() const override { return BlendMethod::kLinear; }
   void blendTargets(const std::vector<double>& weights,
@@ -44,12 +42,6 @@ class LinearBlender final : public TetMapBlender {
   int examples_ = 0;
   std::vector<Eigen::Matrix3d> maps_;  // tet-major: all examples of a tet together
 };
-
-Eigen::Matrix4d homogeneous(const Eigen::Matrix3d& linear) {
-  Eigen::Matrix4d a = Eigen::Matrix4d::Identity();
-  a.topLeftCorner<3, 3>() = linear;
-  return a;
-}
 
 // Alexa: exp(sum_k w_k log F_kj). alexaBlend (core/baselines.h) checks each
 // map for a real principal logarithm once; the logarithms are kept so a
@@ -103,12 +95,7 @@ class PolarSlerpBlender final : public TetMapBlender {
     const auto sizes = blend_detail::checkInput(input);
     tets_ = sizes.tets;
     examples_ = sizes.examples;
-    maps_.resize(static_cast<size_t>(tets_) * examples_);
-    forEachTet(tets_, [&](int j) {
-      for (int k = 0; k < examples_; ++k) {
-        maps_[static_cast<size_t>(j) * examples_ + k] = (*input.gradients)[k][j];
-      }
-    });
+    maps_ = blend_detail::tetMajorGradients(input, sizes);
   }
   BlendMethod method() const override { return BlendMethod::kPolarSlerp; }
   void blendTargets(const std::vector<double>& weights,

@@ -42,6 +42,18 @@ inline double restWeight(const std::vector<double>& weights) {
   return 1.0 - sum;
 }
 
+/// The 4 by 4 homogeneous matrix of a linear map (no translation).
+inline Eigen::Matrix4d homogeneous(const Eigen::Matrix3d& linear) {
+  Eigen::Matrix4d a = Eigen::Matrix4d::Identity();
+  a.topLeftCorner<3, 3>() = linear;
+  return a;
+}
+
+/// The deformation gradients of `input` re-laid tet-major (#T * #examples:
+/// all examples of tet j at [j * examples, (j + 1) * examples)), so one tet's
+/// blend reads contiguous memory.
+std::vector<Eigen::Matrix3d> tetMajorGradients(const BlendInput& input, const InputSizes& sizes);
+
 /// Rethrows a DomainError from a core kernel with the method, example (or -1
 /// for a blend) and tet named.
 [[noreturn]] void rethrowForTet(const std::string& method, int example, int tet,

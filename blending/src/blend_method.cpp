@@ -115,6 +115,16 @@ InputSizes checkInput(const BlendInput& input) {
   return sizes;
 }
 
+std::vector<Eigen::Matrix3d> tetMajorGradients(const BlendInput& input, const InputSizes& sizes) {
+  std::vector<Eigen::Matrix3d> maps(static_cast<size_t>(sizes.tets) * sizes.examples);
+  forEachTet(sizes.tets, [&](int j) {
+    for (int k = 0; k < sizes.examples; ++k) {
+      maps[static_cast<size_t>(j) * sizes.examples + k] = (*input.gradients)[k][j];
+    }
+  });
+  return maps;
+}
+
 void rethrowForTet(const std::string& method, int example, int tet, const std::exception& error) {
   std::ostringstream message;
   message << method << ": ";

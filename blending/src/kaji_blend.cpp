@@ -12,12 +12,7 @@ namespace tetblend {
 namespace {
 
 using blend_detail::forEachTet;
-
-Eigen::Matrix4d homogeneous(const Eigen::Matrix3d& linear) {
-  Eigen::Matrix4d a = Eigen::Matrix4d::Identity();
-  a.topLeftCorner<3, 3>() = linear;
-  return a;
-}
+using blend_detail::homogeneous;
 
 // Parameters per tet and example: rotation lift base (3), lift correction
 // (3), then the upper triangle of the stretch log (6), tet-major so one
@@ -118,12 +113,7 @@ class KajiFrechetBlender final : public TetMapBlender {
     const auto sizes = blend_detail::checkInput(input);
     tets_ = sizes.tets;
     examples_ = sizes.examples;
-    maps_.resize(static_cast<size_t>(tets_) * examples_);
-    forEachTet(tets_, [&](int j) {
-      for (int k = 0; k < examples_; ++k) {
-        maps_[static_cast<size_t>(j) * examples_ + k] = (*input.gradients)[k][j];
-      }
-    });
+    maps_ = blend_detail::tetMajorGradients(input, sizes);
   }
 
   BlendMethod method() const override { return BlendMethod::kKajiFrechet; }
