@@ -5,6 +5,7 @@
 #include <tbb/parallel_for.h>
 
 #include <Eigen/Core>
+#include <algorithm>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -53,6 +54,15 @@ inline Eigen::Matrix4d homogeneous(const Eigen::Matrix3d& linear) {
 /// all examples of tet j at [j * examples, (j + 1) * examples)), so one tet's
 /// blend reads contiguous memory.
 std::vector<Eigen::Matrix3d> tetMajorGradients(const BlendInput& input, const InputSizes& sizes);
+
+/// The weights with the rest's weight 1 - sum(w) prepended: index 0 is the
+/// rest, index k the k-th example.
+inline std::vector<double> withRestWeight(const std::vector<double>& weights) {
+  std::vector<double> all(weights.size() + 1);
+  all[0] = restWeight(weights);
+  std::copy(weights.begin(), weights.end(), all.begin() + 1);
+  return all;
+}
 
 /// Rethrows a DomainError from a core kernel with the method, example (or -1
 /// for a blend) and tet named.

@@ -45,9 +45,7 @@ class DualQuaternionBlender final : public TetMapBlender {
                     std::vector<Eigen::Matrix3d>& targets) const override {
     checkWeights(weights, examples_);
     targets.resize(tets_);
-    std::vector<double> allWeights(examples_ + 1);
-    allWeights[0] = blend_detail::restWeight(weights);
-    std::copy(weights.begin(), weights.end(), allWeights.begin() + 1);
+    const std::vector<double> allWeights = blend_detail::withRestWeight(weights);
     tbb::parallel_for(
         tbb::blocked_range<int>(0, tets_, blend_detail::kTetGrain),
         [&](const tbb::blocked_range<int>& range) {
