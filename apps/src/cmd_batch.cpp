@@ -164,7 +164,7 @@ void runBatch(const BatchArgs& a) {
   const std::size_t n = spec.jobs.size();
   std::vector<std::string> fingerprints(n);
   std::vector<JobOutcome> outcomes(n);
-  std::vector<std::size_t> todo;
+  std::vector<std::size_t> pendingJobs;
   for (std::size_t i = 0; i < n; ++i) {
     const BatchJob& job = spec.jobs[i];
     fingerprints[i] = fingerprint(spec, job, modelHash);
@@ -184,14 +184,14 @@ void runBatch(const BatchArgs& a) {
     if (skip) {
       outcomes[i].done = outcomes[i].skipped = true;
     } else {
-      todo.push_back(i);
+      pendingJobs.push_back(i);
     }
   }
 
-  if (!todo.empty()) {
+  if (!pendingJobs.empty()) {
     std::map<std::string, std::string> methodError;  // method name -> why it cannot run
     std::vector<BlendMethod> methods;
-    for (std::size_t i : todo) {
+    for (std::size_t i : pendingJobs) {
       const std::string& name = spec.jobs[i].method;
       if (methodError.count(name)) continue;
       try {
@@ -217,12 +217,12 @@ void runBatch(const BatchArgs& a) {
       }
     }
 
-    ProgressBar progress("batch", todo.size(), a.quiet);
+    ProgressBar progress("batch", pendingJobs.size(), a.quiet);
     std::mutex blendMutex;
     std::atomic<std::size_t> next{0};
     const auto worker = [&] {
-      for (std::size_t t = next++; t < todo.size(); t = next++) {
-        const std::size_t i = todo[t];
+      for (std::size_t t = next++; t < pendingJobs.size(); t = next++) {
+        const std::size_t i = pendingJobs[t];
         const BatchJob& job = spec.jobs[i];
         JobOutcome& o = outcomes[i];
         const auto start = std::chrono::steady_clock::now();
@@ -245,7 +245,7 @@ void runBatch(const BatchArgs& a) {
       }
     };
     const int workers = std::min<int>(resolveThreads(a.threads >= 0 ? a.threads : spec.threads),
-                                      static_cast<int>(todo.size()));
+                                      static_cast<int>(pendingJobs.size()));
     std::vector<std::thread> pool;
     for (int w = 1; w < workers; ++w) pool.emplace_back(worker);
     worker();
