@@ -1,7 +1,9 @@
 #include "tetblend/meshing/compatible_tets.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <numeric>
 #include <string>
 #include <utility>
 #include <vector>
@@ -14,8 +16,12 @@
 #include <Eigen/CholmodSupport>
 #endif
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 #include "tet_elements.h"
 #include "tetblend/core/error.h"
+#include "tetblend/core/sym3.h"
 #include "tetblend/core/tet_geometry.h"
 #include "tetblend/meshing/tet_boundary.h"
 #include "untangle.h"
@@ -24,6 +30,33 @@ namespace tetblend {
 
 using SparseMatrix = Eigen::SparseMatrix<double>;
 using RotationField = std::vector<Eigen::Matrix3d>;
+
+namespace {
+
+// Tets (or vertices) per TBB task: large enough that scheduling costs little
+// against ~1 µs of work per tet.
+constexpr int kGrain = 2048;
+
+// Runs body(i) for i in [0, count) on TBB's threads.
+template <typename Body>
+void parallelFor(Eigen::Index count, const Body& body) {
+  tbb::parallel_for(tbb::blocked_range<Eigen::Index>(0, count, kGrain),
+                    [&](const tbb::blocked_range<Eigen::Index>& range) {
+                      for (Eigen::Index i = range.begin(); i != range.end(); ++i) body(i);
+                    });
+}
+
+// ‖F − R‖² for the rotation R closest to F (reflection removed, as in
+// closestRotation) from the singular values of F, σ_i = sqrt(eig(FᵀF)):
+// Σ (σ_i − 1)², with the smallest σ taken negative when det F < 0.
+double arapResidual(const Eigen::Matrix3d& f, double det) {
+  const Eigen::Vector3d eigenvalues = symEigenvalues(f.transpose() * f);  // descending
+  Eigen::Vector3d sigma = eigenvalues.cwiseMax(0.0).cwiseSqrt();
+  if (det < 0.0) sigma.z() = -sigma.z();
+  return (sigma - Eigen::Vector3d::Ones()).squaredNorm();
+}
+
+}  // namespace
 
 struct CompatibleTetBuilder::Impl {
   TetMesh rest;
@@ -45,6 +78,7 @@ struct CompatibleTetBuilder::Impl {
   Eigen::SimplicialLDLT<SparseMatrix> solver;
 #endif
   double diagonal = 0.0;
+  double totalVolume = 0.0;         // Σ_t vol_t
   std::vector<int> vertexTetStart;  // CSR: tets of vertex v are
   std::vector<int> vertexTets;      // vertexTets[vertexTetStart[v] .. vertexTetStart[v+1])
 
@@ -109,36 +143,57 @@ struct CompatibleTetBuilder::Impl {
     return solver.solve(rhs - couplingBlock * boundary);
   }
 
-  // Σ_t vol_t R_t g_a over the tets, restricted to interior vertices a
-  // (the right-hand side of the ARAP global step).
-  Eigen::MatrixXd arapRhs(const RotationField& rotations) const {
-    Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(interiorCount, 3);
-    for (Eigen::Index t = 0; t < rest.tets.rows(); ++t) {
-      const TetElement& element = elements[static_cast<size_t>(t)];
-      for (int a = 0; a < 4; ++a) {
-        const int v = rest.tets(t, a) - surfaceCount;
-        if (v < 0) continue;
-        rhs.row(v) += element.volume *
-                      (rotations[static_cast<size_t>(t)] * element.gradients.col(a)).transpose();
+  // Σ_t vol_t R_t g_a over the tets, restricted to interior vertices a (the
+  // right-hand side of the ARAP global step), gathered per vertex so the
+  // vertices are independent and the sums are in a fixed order.
+  void arapRhs(const RotationField& rotations, Eigen::MatrixXd& rhs) const {
+    rhs.resize(interiorCount, 3);
+    parallelFor(interiorCount, [&](Eigen::Index i) {
+      const int v = surfaceCount + static_cast<int>(i);
+      Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+      for (int k = vertexTetStart[static_cast<size_t>(v)];
+           k < vertexTetStart[static_cast<size_t>(v) + 1]; ++k) {
+        const int t = vertexTets[static_cast<size_t>(k)];
+        const TetElement& element = elements[static_cast<size_t>(t)];
+        int a = 0;
+        while (rest.tets(t, a) != v) ++a;
+        sum += element.volume * (rotations[static_cast<size_t>(t)] * element.gradients.col(a));
       }
-    }
-    return rhs;
+      rhs.row(i) = sum.transpose();
+    });
   }
 
-  // Local step: the rotation closest to each tet's deformation gradient.
-  RotationField localRotations(const Vertices& positions, double* energy) const {
-    RotationField rotations(elements.size());
-    double sum = 0.0;
-    double volume = 0.0;
-    for (Eigen::Index t = 0; t < rest.tets.rows(); ++t) {
+  // Local step: the rotation closest to each tet's deformation gradient,
+  // written into `rotations` (resized to #T). Returns the ARAP energy
+  // Σ_t vol_t ‖F_t − R_t‖² / Σ_t vol_t.
+  double localRotations(const Vertices& positions, RotationField& rotations) const {
+    rotations.resize(elements.size());
+    std::vector<double> residual(elements.size());
+    parallelFor(rest.tets.rows(), [&](Eigen::Index t) {
       const TetElement& element = elements[static_cast<size_t>(t)];
       const Eigen::Matrix3d f = deformationGradient(positions, rest.tets.row(t), element);
       rotations[static_cast<size_t>(t)] = closestRotation(f);
-      sum += element.volume * (f - rotations[static_cast<size_t>(t)]).squaredNorm();
-      volume += element.volume;
-    }
-    if (energy) *energy = sum / volume;
-    return rotations;
+      residual[static_cast<size_t>(t)] =
+          element.volume * (f - rotations[static_cast<size_t>(t)]).squaredNorm();
+    });
+    return std::accumulate(residual.begin(), residual.end(), 0.0) / totalVolume;
+  }
+
+  // ARAP energy (as localRotations, from singular values instead of an SVD
+  // per tet) and min_t det F_t of `positions`, stored into `result`.
+  void measure(const Vertices& positions, CompatibleTetResult& result) const {
+    std::vector<double> residual(elements.size());
+    std::vector<double> determinant(elements.size());
+    parallelFor(rest.tets.rows(), [&](Eigen::Index t) {
+      const TetElement& element = elements[static_cast<size_t>(t)];
+      const Eigen::Matrix3d f = deformationGradient(positions, rest.tets.row(t), element);
+      const double det = f.determinant();
+      determinant[static_cast<size_t>(t)] = det;
+      residual[static_cast<size_t>(t)] = element.volume * arapResidual(f, det);
+    });
+    result.arapEnergy = std::accumulate(residual.begin(), residual.end(), 0.0) / totalVolume;
+    result.minVolumeRatio =
+        determinant.empty() ? INFINITY : *std::min_element(determinant.begin(), determinant.end());
   }
 
   // Rotations propagated from the boundary: each surface triangle's rotation
@@ -166,7 +221,7 @@ struct CompatibleTetBuilder::Impl {
     const Eigen::MatrixXd interior =
         solveInterior(Eigen::MatrixXd::Zero(interiorCount, 9), boundary);
     RotationField rotations(elements.size());
-    for (Eigen::Index t = 0; t < rest.tets.rows(); ++t) {
+    parallelFor(rest.tets.rows(), [&](Eigen::Index t) {
       Eigen::Matrix<double, 1, 9> sum = Eigen::Matrix<double, 1, 9>::Zero();
       for (int a = 0; a < 4; ++a) {
         const int v = rest.tets(t, a);
@@ -177,8 +232,55 @@ struct CompatibleTetBuilder::Impl {
         }
       }
       rotations[static_cast<size_t>(t)] = closestRotation(Eigen::Map<Eigen::Matrix3d>(sum.data()));
-    }
+    });
     return rotations;
+  }
+
+  // Step 2: ARAP from the harmonic extension in `result.vertices` (or from
+  // the propagated-rotation start), keeping the candidate with the fewest
+  // inverted tets, then the lowest ARAP energy: ARAP can fold strongly
+  // compressed regions that harmonic kept valid. With options.stopWhenValid
+  // the first candidate without inverted tets ends the search.
+  void arapSearch(const Vertices& example, CompatibleTetResult& result) const {
+    const Eigen::MatrixXd boundary = example;
+    Vertices best;
+    std::pair<size_t, double> bestKey(SIZE_MAX, INFINITY);
+    auto consider = [&](const Vertices& candidate, double energy) {
+      const std::pair<size_t, double> key(invertedTets(candidate, rest.tets).size(), energy);
+      if (key < bestKey) {
+        best = candidate;
+        bestKey = key;
+      }
+      return options.stopWhenValid && bestKey.first == 0;
+    };
+    RotationField rotations;
+    double energy = localRotations(result.vertices, rotations);
+    bool done = consider(result.vertices, energy);
+    Vertices current = result.vertices;
+    Eigen::MatrixXd rhs;
+    if (options.propagateRotations && !done) {
+      arapRhs(propagatedRotations(example), rhs);
+      Vertices propagated = assemble(example, solveInterior(rhs, boundary));
+      RotationField propagatedRotations;
+      const double propagatedEnergy = localRotations(propagated, propagatedRotations);
+      done = consider(propagated, propagatedEnergy);
+      if (propagatedEnergy < energy) {  // warm start from the better of the two
+        current = std::move(propagated);
+        rotations = std::move(propagatedRotations);
+      }
+    }
+    const double tolerance = options.arapRelativeTolerance * diagonal;
+    for (int iteration = 0; iteration < options.arapIterations && !done; ++iteration) {
+      arapRhs(rotations, rhs);
+      const Eigen::MatrixXd interior = solveInterior(rhs, boundary);
+      const double moved =
+          (interior - current.bottomRows(interiorCount)).rowwise().norm().maxCoeff();
+      current.bottomRows(interiorCount) = interior;
+      ++result.arapIterations;
+      energy = localRotations(current, rotations);
+      done = consider(current, energy) || moved <= tolerance;
+    }
+    result.vertices = std::move(best);
   }
 
   Vertices assemble(const Vertices& example, const Eigen::MatrixXd& interior) const {
@@ -204,6 +306,7 @@ CompatibleTetBuilder::CompatibleTetBuilder(const TetMesh& rest, int surfaceVerte
   m.interiorCount = vertexCount - surfaceVertexCount;
   m.options = options;
   m.elements = buildTetElements(rest);
+  for (const TetElement& element : m.elements) m.totalVolume += element.volume;
   m.diagonal = boundingBoxDiagonal(rest.vertices);
   m.surfaceTriangles = boundarySurface(rest).triangles;
   if (m.surfaceTriangles.size() > 0 && m.surfaceTriangles.maxCoeff() >= surfaceVertexCount) {
@@ -290,61 +393,15 @@ CompatibleTetResult CompatibleTetBuilder::place(const Vertices& exampleSurface) 
   result.vertices = harmonicExtension(exampleSurface);
   result.harmonicInvertedCount =
       static_cast<int>(invertedTets(result.vertices, m.rest.tets).size());
-  if (m.interiorCount > 0) {
-    const Eigen::MatrixXd boundary = exampleSurface;
-    // Keep the candidate with the fewest inverted tets, then the lowest ARAP
-    // energy: ARAP can fold strongly compressed regions that harmonic kept
-    // valid, and an affine example is already optimal as harmonic.
-    Vertices best;
-    std::pair<size_t, double> bestKey(SIZE_MAX, INFINITY);
-    auto consider = [&](const Vertices& candidate, double energy) {
-      const std::pair<size_t, double> key(invertedTets(candidate, m.rest.tets).size(), energy);
-      if (key < bestKey) {
-        best = candidate;
-        bestKey = key;
-      }
-    };
-    double energy = 0.0;
-    RotationField rotations = m.localRotations(result.vertices, &energy);
-    consider(result.vertices, energy);
-    Vertices current = result.vertices;
-    if (m.options.propagateRotations) {
-      Vertices propagated =
-          m.assemble(exampleSurface,
-                     m.solveInterior(m.arapRhs(m.propagatedRotations(exampleSurface)), boundary));
-      double propagatedEnergy = 0.0;
-      RotationField propagatedRotations = m.localRotations(propagated, &propagatedEnergy);
-      consider(propagated, propagatedEnergy);
-      if (propagatedEnergy < energy) {  // warm start from the better of the two
-        current = std::move(propagated);
-        rotations = std::move(propagatedRotations);
-      }
-    }
-    const double tolerance = m.options.arapRelativeTolerance * m.diagonal;
-    for (int iteration = 0; iteration < m.options.arapIterations; ++iteration) {
-      const Eigen::MatrixXd interior = m.solveInterior(m.arapRhs(rotations), boundary);
-      const double moved =
-          (interior - current.bottomRows(m.interiorCount)).rowwise().norm().maxCoeff();
-      current.bottomRows(m.interiorCount) = interior;
-      ++result.arapIterations;
-      rotations = m.localRotations(current, &energy);
-      consider(current, energy);
-      if (moved <= tolerance) break;
-    }
-    result.vertices = std::move(best);
+  const bool harmonicAccepted = m.options.stopWhenValid && result.harmonicInvertedCount == 0;
+  if (m.interiorCount > 0 && !harmonicAccepted) {
+    m.arapSearch(exampleSurface, result);
     if (m.options.untangle) result.untangleRounds = m.untangleInverted(result.vertices);
   }
-  m.localRotations(result.vertices, &result.arapEnergy);
+  m.measure(result.vertices, result);
   result.invertedTets = invertedTets(result.vertices, m.rest.tets);
   for (int t : result.invertedTets) {
     result.invertedVolumes.push_back(tetSignedVolume(result.vertices, m.rest.tets.row(t)));
-  }
-  result.minVolumeRatio = INFINITY;
-  for (Eigen::Index t = 0; t < m.rest.tets.rows(); ++t) {
-    result.minVolumeRatio = std::min(
-        result.minVolumeRatio,
-        deformationGradient(result.vertices, m.rest.tets.row(t), m.elements[static_cast<size_t>(t)])
-            .determinant());
   }
   return result;
 }

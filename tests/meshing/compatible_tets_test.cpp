@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <iostream>
 #include <random>
@@ -9,6 +11,7 @@
 #include <vector>
 
 #include <Eigen/LU>
+#include <Eigen/SVD>
 
 #include "tetblend/core/error.h"
 #include "tetblend/core/tet_geometry.h"
@@ -38,6 +41,40 @@ int countInverted(const Vertices& vertices, const Tets& tets) {
     if (!(tetSignedVolume(vertices, tets.row(t)) > 0.0)) ++count;
   }
   return count;
+}
+
+// ARAP energy Σ_t vol_t ‖F_t − R_t‖² / Σ_t vol_t with R_t from a full SVD
+// (reflection removed) and min_t det F_t, computed here independently of the
+// builder: F_t = D_t(x) D_t(rest)⁻¹ from tetEdgeMatrix.
+struct Distortion {
+  double energy = 0.0;
+  double minDet = INFINITY;
+};
+
+Distortion distortionOf(const Vertices& rest, const Vertices& deformed, const Tets& tets) {
+  Distortion d;
+  double volume = 0.0;
+  for (Eigen::Index t = 0; t < tets.rows(); ++t) {
+    const Eigen::Matrix3d restEdges = tetEdgeMatrix(rest, tets.row(t));
+    const Eigen::Matrix3d f = tetEdgeMatrix(deformed, tets.row(t)) * restEdges.inverse();
+    const Eigen::JacobiSVD<Eigen::Matrix3d> svd(f, Eigen::ComputeFullU | Eigen::ComputeFullV);
+    Eigen::Matrix3d u = svd.matrixU();
+    if ((u * svd.matrixV().transpose()).determinant() < 0) u.col(2) *= -1.0;
+    const double restVolume = restEdges.determinant() / 6.0;
+    d.energy += restVolume * (f - u * svd.matrixV().transpose()).squaredNorm();
+    volume += restVolume;
+    d.minDet = std::min(d.minDet, f.determinant());
+  }
+  d.energy /= volume;
+  return d;
+}
+
+// Both placement policies: accept the first valid candidate (default) and
+// run ARAP to convergence.
+std::vector<CompatibleTetOptions> bothStopPolicies() {
+  CompatibleTetOptions converge;
+  converge.stopWhenValid = false;
+  return {CompatibleTetOptions{}, converge};
 }
 
 struct Case {
@@ -111,10 +148,13 @@ TEST(CompatibleTets, AffineBoundaryGivesAffineInterior) {
 }
 
 TEST(CompatibleTets, TwistByTwoAndFourPiOfALongBarHasNoInvertedTet) {
-  for (const double angle : {2.0 * kPi, 4.0 * kPi}) {
-    const CompatibleTetResult result = placeAndCheck(twistedBar(1.0, 6.0, 4, angle));
-    EXPECT_TRUE(result.invertedTets.empty()) << "angle " << angle;
-    EXPECT_GT(result.minVolumeRatio, 0.0);
+  for (const CompatibleTetOptions& options : bothStopPolicies()) {
+    for (const double angle : {2.0 * kPi, 4.0 * kPi}) {
+      const CompatibleTetResult result = placeAndCheck(twistedBar(1.0, 6.0, 4, angle), options);
+      EXPECT_TRUE(result.invertedTets.empty())
+          << "angle " << angle << " stopWhenValid " << options.stopWhenValid;
+      EXPECT_GT(result.minVolumeRatio, 0.0);
+    }
   }
 }
 
@@ -138,18 +178,24 @@ TEST(CompatibleTets, BendBy180DegreesHasNoInvertedTet) {
   c.rest = reorderBoundaryFirst(boxTetMesh(20, 5, 5, Eigen::Vector3d(length, 1.0, 1.0)));
   c.example = bendAboutAxis(c.rest.mesh.vertices, Eigen::Vector3d(-length / 2, 0, 0),
                             Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitY(), kPi, length);
-  const CompatibleTetResult result = placeAndCheck(c);
-  EXPECT_TRUE(result.invertedTets.empty());
-  EXPECT_GT(result.minVolumeRatio, 0.0);
+  for (const CompatibleTetOptions& options : bothStopPolicies()) {
+    const CompatibleTetResult result = placeAndCheck(c, options);
+    EXPECT_TRUE(result.invertedTets.empty()) << "stopWhenValid " << options.stopWhenValid;
+    EXPECT_GT(result.minVolumeRatio, 0.0);
+  }
 }
 
 TEST(CompatibleTets, SkinnedLimbsAt170DegreesHaveNoInvertedTet) {
   for (const bool dualQuaternion : {false, true}) {
     for (const Eigen::Vector3d& axis : {Eigen::Vector3d(0, 0, 1), Eigen::Vector3d(1, 0, 0)}) {
       if (!dualQuaternion && axis.z() == 1) continue;  // see the LBS bend test below
-      const CompatibleTetResult result = placeAndCheck(skinnedLimb(dualQuaternion, axis));
-      EXPECT_TRUE(result.invertedTets.empty())
-          << (dualQuaternion ? "DQS" : "LBS") << " axis " << axis.transpose();
+      for (const CompatibleTetOptions& options : bothStopPolicies()) {
+        const CompatibleTetResult result =
+            placeAndCheck(skinnedLimb(dualQuaternion, axis), options);
+        EXPECT_TRUE(result.invertedTets.empty())
+            << (dualQuaternion ? "DQS" : "LBS") << " axis " << axis.transpose() << " stopWhenValid "
+            << options.stopWhenValid;
+      }
     }
   }
 }
@@ -181,6 +227,63 @@ TEST(CompatibleTets, UntanglingAloneRepairsTheHarmonicExtension) {
   EXPECT_GT(result.harmonicInvertedCount, 0);
   EXPECT_GT(result.untangleRounds, 0);
   EXPECT_TRUE(result.invertedTets.empty());
+}
+
+// Reported energy and min det agree with the independent SVD oracle; the
+// builder takes singular values from eig(FᵀF), whose smallest carries an
+// absolute error ~eps·σ₁², so 1e-9 relative covers these meshes (σ ≤ ~10).
+constexpr double kDistortionRelativeTolerance = 1e-9;
+
+void expectDistortionReported(const Case& c, const CompatibleTetResult& result) {
+  const Distortion oracle = distortionOf(c.rest.mesh.vertices, result.vertices, c.rest.mesh.tets);
+  EXPECT_NEAR(result.arapEnergy, oracle.energy, kDistortionRelativeTolerance * oracle.energy);
+  EXPECT_NEAR(result.minVolumeRatio, oracle.minDet,
+              kDistortionRelativeTolerance * std::max(1.0, std::abs(oracle.minDet)));
+}
+
+// A 2π twist of a long bar: the harmonic extension has no inverted tet, so by
+// default it is the result with no ARAP iteration; stopWhenValid = false runs
+// ARAP from it and must lower the ARAP energy without inverting a tet.
+TEST(CompatibleTets, ValidHarmonicExtensionIsAcceptedWithoutArap) {
+  const Case c = twistedBar(1.0, 6.0, 4, 2.0 * kPi);
+  const CompatibleTetBuilder builder(c.rest.mesh, c.rest.boundaryVertexCount);
+  const Vertices harmonic = builder.harmonicExtension(surfaceOf(c));
+  ASSERT_EQ(countInverted(harmonic, c.rest.mesh.tets), 0);
+
+  const CompatibleTetResult accepted = placeAndCheck(c);
+  EXPECT_EQ(accepted.harmonicInvertedCount, 0);
+  EXPECT_EQ(accepted.arapIterations, 0);
+  EXPECT_EQ(accepted.untangleRounds, 0);
+  EXPECT_EQ(accepted.vertices, harmonic);
+  expectDistortionReported(c, accepted);
+
+  CompatibleTetOptions options;
+  options.stopWhenValid = false;
+  const CompatibleTetResult converged = placeAndCheck(c, options);
+  EXPECT_GT(converged.arapIterations, 0);
+  EXPECT_TRUE(converged.invertedTets.empty());
+  EXPECT_LT(converged.arapEnergy, accepted.arapEnergy);
+  expectDistortionReported(c, converged);
+}
+
+// A 4π twist of a short bar inverts the harmonic extension: ARAP and
+// untangling still run by default, stop no later than without
+// stopWhenValid, and both leave no inverted tet.
+TEST(CompatibleTets, InvertedHarmonicExtensionStillRunsArap) {
+  const Case c = twistedBar(1.0, 2.0, 5, 4.0 * kPi);
+  const CompatibleTetResult stopped = placeAndCheck(c);
+  ASSERT_GT(stopped.harmonicInvertedCount, 0);
+  EXPECT_TRUE(stopped.invertedTets.empty());
+  EXPECT_GT(stopped.minVolumeRatio, 0.0);
+  expectDistortionReported(c, stopped);
+
+  CompatibleTetOptions options;
+  options.stopWhenValid = false;
+  const CompatibleTetResult converged = placeAndCheck(c, options);
+  EXPECT_TRUE(converged.invertedTets.empty());
+  EXPECT_GT(converged.arapIterations, 0);
+  EXPECT_LE(stopped.arapIterations, converged.arapIterations);
+  expectDistortionReported(c, converged);
 }
 
 TEST(CompatibleTets, RejectsBadInput) {

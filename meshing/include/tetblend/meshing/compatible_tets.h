@@ -8,7 +8,12 @@
 // Pipeline per example (one factorisation of the rest stiffness matrix is
 // shared by every step and every example):
 //  1. harmonic extension: piecewise-linear FEM Laplace equation with the
-//     surface as Dirichlet data; reproduces affine boundary maps exactly;
+//     surface as Dirichlet data; reproduces affine boundary maps exactly.
+//     With CompatibleTetOptions::stopWhenValid (the default) a harmonic
+//     extension without inverted tets is the result, and step 2 stops at the
+//     first candidate without inverted tets: on the benchmark's 2π twist,
+//     180° bend and 170° elbow ARAP lowers the ARAP energy by at most ~15%
+//     (0.102→0.102, 0.030→0.025, 0.140→0.123) at ~20× the cost;
 //  2. volumetric ARAP (Sorkine & Alexa 2007, per tet: min Σ_t vol_t
 //     ‖∇_t x − R_t‖², local polar rotation, global solve with the same
 //     matrix), warm-started from whichever has the lower ARAP energy: the
@@ -39,6 +44,11 @@ struct CompatibleTetOptions {
   /// ARAP stops when no interior vertex moved more than this fraction of the
   /// rest bounding-box diagonal in one iteration (relative, unitless).
   double arapRelativeTolerance = 1e-7;
+  /// Accept the first placement without inverted tets: the harmonic
+  /// extension when it has none (no ARAP iteration), else the first ARAP
+  /// candidate with none. false: ARAP runs to convergence even from a valid
+  /// harmonic extension (lower distortion, many times slower).
+  bool stopWhenValid = true;
   /// Also try the start from rotations propagated from the boundary (step 2
   /// above); ARAP starts from it when its ARAP energy beats the harmonic's.
   bool propagateRotations = true;
