@@ -33,6 +33,10 @@ class LieBodySpline {
   /// the first or last segment.
   LieBody evaluate(double u) const;
 
+  /// B_i of segment i in [0, n-1] (eq. 6): the tangent whose exponential
+  /// carries key i along its segment; C_i is the remaining log of eq. 5.
+  const LieBodyTangent& segmentVelocity(int i) const { return b_.at(i); }
+
   /// Corners of the tet of evaluate(u).
   TetCorners evaluateCorners(double u) const;
 
