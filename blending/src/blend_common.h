@@ -29,6 +29,17 @@ void forEachTet(int count, const Body& body) {
                     });
 }
 
+/// Runs body(begin, end) on consecutive chunks of at most kTetGrain tets
+/// covering [0, count), in parallel; each chunk writes only its own tets'
+/// outputs (so a body can gather a chunk's parameters into one contiguous
+/// array and hand it to a batched kernel).
+template <typename Body>
+void forEachTetChunk(int count, const Body& body) {
+  tbb::parallel_for(
+      tbb::blocked_range<int>(0, count, kTetGrain),
+      [&](const tbb::blocked_range<int>& range) { body(range.begin(), range.end()); });
+}
+
 /// Number of tets and examples of a BlendInput, after checking it is complete.
 struct InputSizes {
   int tets = 0;

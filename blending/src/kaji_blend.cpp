@@ -1,5 +1,6 @@
 #include "tetblend/blending/kaji_blend.h"
 
+#include <algorithm>
 #include <sstream>
 
 #include "blend_common.h"
@@ -14,12 +15,14 @@ namespace {
 using blend_detail::forEachTet;
 using blend_detail::homogeneous;
 
-// Parameters per tet and example: rotation lift base (3), lift correction
-// (3), then the upper triangle of the stretch log (6), tet-major so one
-// tet's examples are contiguous.
-constexpr int kParamsPerMap = 12;
-constexpr int kCorrectionOffset = 3;
-constexpr int kStretchOffset = 6;
+// Parameters per tet and example: rotation lift base (3), then the upper
+// triangle of the stretch log (6), tet-major so one tet's examples are
+// contiguous. The lift corrections are zero except in the few tets where a
+// lift had to leave the principal branch (rotation_consistency.h), so they
+// are kept only for those tets (3 per example, in corrected-tet order).
+constexpr int kParamsPerMap = 9;
+constexpr int kStretchOffset = 3;
+constexpr int kCorrectionSize = 3;
 
 class KajiBlender final : public TetMapBlender {
  public:
@@ -28,69 +31,91 @@ class KajiBlender final : public TetMapBlender {
     tets_ = sizes.tets;
     examples_ = sizes.examples;
     params_.resize(static_cast<size_t>(tets_) * examples_ * kParamsPerMap);
-    corrected_.assign(tets_, 0);
-    std::vector<Eigen::Matrix3d> stretchLogs(tets_);
-    std::vector<Eigen::Matrix3d> rotations(tets_);
-    for (int k = 0; k < examples_; ++k) {
-      const auto& gradients = (*input.gradients)[k];
-      forEachTet(tets_, [&](int j) {
-        try {
-          const AffineParams principal = psi(homogeneous(gradients[j]));
-          stretchLogs[j] = principal.stretchLog;
-          rotations[j] = so3Exp(principal.rotationLog);
-        } catch (const DomainError& error) {
-          blend_detail::rethrowForTet("kaji", k, j, error);
-        }
-      });
-      const std::vector<RotationLift> lifts =
-          rotationLifts(rotations, *input.adjacency, *input.components, input.rotationConsistency);
-      forEachTet(tets_, [&](int j) {
-        double* p = param(j, k);
-        const Eigen::Matrix3d& y = stretchLogs[j];
-        for (int i = 0; i < 3; ++i) {
-          p[i] = lifts[j].base(i);
-          p[kCorrectionOffset + i] = lifts[j].correction(i);
-        }
-        p[6] = y(0, 0);
-        p[7] = y(0, 1);
-        p[8] = y(0, 2);
-        p[9] = y(1, 1);
-        p[10] = y(1, 2);
-        p[11] = y(2, 2);
-        if (!lifts[j].correction.isZero(0.0)) corrected_[j] = 1;
-      });
+    std::vector<char> corrected(tets_, 0);
+    std::vector<std::vector<RotationLift>> lifts(examples_);
+    {
+      std::vector<Eigen::Matrix3d> rotations(tets_);
+      for (int k = 0; k < examples_; ++k) {
+        const auto& gradients = (*input.gradients)[k];
+        forEachTet(tets_, [&](int j) {
+          try {
+            const AffineParams principal = psi(homogeneous(gradients[j]));
+            const Eigen::Matrix3d& y = principal.stretchLog;
+            double* p = param(j, k) + kStretchOffset;
+            p[0] = y(0, 0);
+            p[1] = y(0, 1);
+            p[2] = y(0, 2);
+            p[3] = y(1, 1);
+            p[4] = y(1, 2);
+            p[5] = y(2, 2);
+            rotations[j] = so3Exp(principal.rotationLog);
+          } catch (const DomainError& error) {
+            blend_detail::rethrowForTet("kaji", k, j, error);
+          }
+        });
+        lifts[k] = rotationLifts(rotations, *input.adjacency, *input.components,
+                                 input.rotationConsistency);
+        forEachTet(tets_, [&](int j) {
+          Eigen::Map<Eigen::Vector3d>(param(j, k)) = lifts[k][j].base;
+          if (!lifts[k][j].correction.isZero(0.0)) corrected[j] = 1;
+        });
+      }
     }
+    for (int j = 0; j < tets_; ++j) {
+      if (corrected[j] == 0) continue;
+      correctedTets_.push_back(j);
+      for (int k = 0; k < examples_; ++k) {
+        for (int i = 0; i < kCorrectionSize; ++i) corrections_.push_back(lifts[k][j].correction(i));
+      }
+    }
+    correctedTets_.shrink_to_fit();
+    corrections_.shrink_to_fit();
   }
 
   BlendMethod method() const override { return BlendMethod::kKaji; }
 
   // B_j = exp(sum w base) exp(sum w correction) exp(sum w Y): Kaji–Ochiai
   // phi (eq. (2)) of the blended parameters, with the rotation lift of
-  // rotation_consistency.h (its correction factor skipped for the tets whose
-  // corrections are all 0, where this is exactly phi(sum_k w_k psi(F_kj))).
+  // rotation_consistency.h (its correction factor only in the tets with a
+  // non-zero correction; elsewhere this is exactly phi(sum_k w_k psi(F_kj))).
+  // Each chunk of tets first sums its parameters into a contiguous array of
+  // blended logarithms, then maps them through the exponentials.
   void blendTargets(const std::vector<double>& weights,
                     std::vector<Eigen::Matrix3d>& targets) const override {
     checkWeights(weights, examples_);
     targets.resize(tets_);
-    forEachTet(tets_, [&](int j) {
-      double sum[kParamsPerMap] = {};
-      const bool corrected = corrected_[j] != 0;
-      for (int k = 0; k < examples_; ++k) {
-        const double* p = param(j, k);
-        const double w = weights[k];
-        for (int i = 0; i < kCorrectionOffset; ++i) sum[i] += w * p[i];
-        if (corrected) {
-          for (int i = kCorrectionOffset; i < kStretchOffset; ++i) sum[i] += w * p[i];
+    blend_detail::forEachTetChunk(tets_, [&](int begin, int end) {
+      std::vector<double> logs(static_cast<size_t>(end - begin) * kParamsPerMap, 0.0);
+      for (int j = begin; j < end; ++j) {
+        double* sum = logs.data() + static_cast<size_t>(j - begin) * kParamsPerMap;
+        const double* p = param(j, 0);
+        for (int k = 0; k < examples_; ++k, p += kParamsPerMap) {
+          const double w = weights[k];
+          for (int i = 0; i < kParamsPerMap; ++i) sum[i] += w * p[i];
         }
-        for (int i = kStretchOffset; i < kParamsPerMap; ++i) sum[i] += w * p[i];
       }
-      Eigen::Matrix3d y;
-      y << sum[6], sum[7], sum[8],  //
-          sum[7], sum[9], sum[10],  //
-          sum[8], sum[10], sum[11];
-      Eigen::Matrix3d rotation = so3Exp(Eigen::Map<const Eigen::Vector3d>(sum));
-      if (corrected) rotation *= so3Exp(Eigen::Map<const Eigen::Vector3d>(sum + kCorrectionOffset));
-      targets[j] = rotation * symExp(y);
+      auto next = std::lower_bound(correctedTets_.begin(), correctedTets_.end(), begin);
+      for (int j = begin; j < end; ++j) {
+        const double* sum = logs.data() + static_cast<size_t>(j - begin) * kParamsPerMap;
+        const double* y = sum + kStretchOffset;
+        Eigen::Matrix3d stretch;
+        stretch << y[0], y[1], y[2],  //
+            y[1], y[3], y[4],         //
+            y[2], y[4], y[5];
+        Eigen::Matrix3d rotation = so3Exp(Eigen::Map<const Eigen::Vector3d>(sum));
+        if (next != correctedTets_.end() && *next == j) {
+          const double* c =
+              corrections_.data() +
+              static_cast<size_t>(next - correctedTets_.begin()) * examples_ * kCorrectionSize;
+          Eigen::Vector3d correction = Eigen::Vector3d::Zero();
+          for (int k = 0; k < examples_; ++k) {
+            correction += weights[k] * Eigen::Map<const Eigen::Vector3d>(c + k * kCorrectionSize);
+          }
+          rotation *= so3Exp(correction);
+          ++next;
+        }
+        targets[j] = rotation * symExp(stretch);
+      }
     });
   }
 
@@ -104,7 +129,8 @@ class KajiBlender final : public TetMapBlender {
   int tets_ = 0;
   int examples_ = 0;
   std::vector<double> params_;
-  std::vector<char> corrected_;  // 1 where some example's lift correction is non-zero
+  std::vector<int> correctedTets_;   // ascending tets with a non-zero lift correction
+  std::vector<double> corrections_;  // their corrections, examples_ * 3 per tet
 };
 
 class KajiFrechetBlender final : public TetMapBlender {

@@ -7,6 +7,7 @@
 #include <Eigen/SparseCore>
 #include <algorithm>
 #include <chrono>
+#include <cstdint>
 #include <numeric>
 #include <sstream>
 
@@ -23,6 +24,10 @@ namespace {
 using SparseMatrix = Eigen::SparseMatrix<double>;
 using RowMatrix3 = Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>;
 using Clock = std::chrono::steady_clock;
+
+// Fixed number of tet chunks of the right-hand side (a constant, not the
+// thread count, so the summation order never changes).
+constexpr int kRhsChunks = 8;
 
 double secondsSince(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
@@ -52,9 +57,10 @@ struct StitchSolver::Impl {
   std::vector<int> componentSize;  // #C vertex counts
   std::vector<int> reducedIndex;   // #V, -1 for pinned vertices
   std::vector<int> freeVertices;   // reduced index -> vertex
-  // Vertex -> incident (tet * 4 + corner), in CSR form, ascending tet order.
-  std::vector<int> incidenceStart;
-  std::vector<int> incidence;
+  // The tets in kRhsChunks contiguous ranges [chunkTet[c], chunkTet[c + 1]),
+  // whose corners lie in the vertex ranges [chunkLow[c], chunkHigh[c]).
+  std::vector<int> chunkTet, chunkLow, chunkHigh;
+  std::vector<Eigen::Index> chunkOffset;  // chunk c's rows in the summing buffer
   StitchBackend backend = StitchBackend::kEigenSimplicialLdlt;
   Eigen::SimplicialLDLT<SparseMatrix, Eigen::Lower, Eigen::AMDOrdering<int>> ldlt;
 #ifdef TETBLEND_HAVE_CHOLMOD
@@ -103,39 +109,62 @@ struct StitchSolver::Impl {
     }
   }
 
-  void buildIncidence(int vertexCount) {
-    incidenceStart.assign(vertexCount + 1, 0);
-    for (Eigen::Index j = 0; j < tets.rows(); ++j) {
-      for (int c = 0; c < 4; ++c) ++incidenceStart[tets(j, c) + 1];
+  void buildChunks() {
+    const auto tetCount = static_cast<int>(tets.rows());
+    chunkTet.resize(kRhsChunks + 1);
+    chunkLow.assign(kRhsChunks, 0);
+    chunkHigh.assign(kRhsChunks, 0);
+    chunkOffset.assign(kRhsChunks + 1, 0);
+    for (int c = 0; c <= kRhsChunks; ++c) {
+      chunkTet[c] = static_cast<int>(static_cast<int64_t>(tetCount) * c / kRhsChunks);
     }
-    std::partial_sum(incidenceStart.begin(), incidenceStart.end(), incidenceStart.begin());
-    incidence.resize(4 * static_cast<size_t>(tets.rows()));
-    std::vector<int> fill(incidenceStart.begin(), incidenceStart.end() - 1);
-    for (Eigen::Index j = 0; j < tets.rows(); ++j) {
-      for (int c = 0; c < 4; ++c) incidence[fill[tets(j, c)]++] = static_cast<int>(4 * j + c);
+    for (int c = 0; c < kRhsChunks; ++c) {
+      if (chunkTet[c] < chunkTet[c + 1]) {
+        const auto block = tets.middleRows(chunkTet[c], chunkTet[c + 1] - chunkTet[c]);
+        chunkLow[c] = block.minCoeff();
+        chunkHigh[c] = block.maxCoeff() + 1;
+      }
+      chunkOffset[c + 1] = chunkOffset[c] + (chunkHigh[c] - chunkLow[c]);
     }
   }
 
   // rhs(r, :) = sum over the tets j of free vertex r (corner c) of
-  // vol_j B_j g_c (Sumner-Popovic eq. 6's right-hand side), rows in reduced order.
-  // Row rowOf[r] receives free vertex r (identity when rowOf is empty).
+  // vol_j B_j g_c (Sumner-Popovic eq. 6's right-hand side), rows in reduced
+  // order; row rowOf[r] receives free vertex r (identity when rowOf is empty).
+  // Each tet is visited once: C = vol_j B_j D_rest,j^-T holds vol_j B_j g_c
+  // for corners 1..3 in its columns, and corner 0 gets minus their sum. The
+  // chunks of tets are summed in parallel, each sequentially into its own
+  // vertex-range buffer; every vertex then adds the buffers in chunk order,
+  // so the result does not depend on the schedule or the thread count.
   template <typename Rhs>
   void assembleRhs(const std::vector<Eigen::Matrix3d>& targets, const std::vector<int>& rowOf,
-                   Rhs& rhs) const {
+                   RowMatrix3& buffer, Rhs& rhs) const {
+    buffer.resize(chunkOffset[kRhsChunks], 3);
+    tbb::parallel_for(0, kRhsChunks, [&](int c) {
+      auto sums = buffer.middleRows(chunkOffset[c], chunkHigh[c] - chunkLow[c]);
+      sums.setZero();
+      const int low = chunkLow[c];
+      for (int j = chunkTet[c]; j < chunkTet[c + 1]; ++j) {
+        const Eigen::Matrix3d columns =
+            rest.volumes[j] * (targets[j] * rest.inverseEdges[j].transpose());
+        sums.row(tets(j, 0) - low) -= columns.rowwise().sum().transpose();
+        for (int corner = 1; corner < 4; ++corner) {
+          sums.row(tets(j, corner) - low) += columns.col(corner - 1).transpose();
+        }
+      }
+    });
     const auto freeCount = static_cast<Eigen::Index>(freeVertices.size());
-    tbb::parallel_for(tbb::blocked_range<Eigen::Index>(0, freeCount, 2048),
+    tbb::parallel_for(tbb::blocked_range<Eigen::Index>(0, freeCount, 4096),
                       [&](const tbb::blocked_range<Eigen::Index>& range) {
                         for (Eigen::Index r = range.begin(); r != range.end(); ++r) {
                           const int v = freeVertices[r];
-                          Eigen::Vector3d sum = Eigen::Vector3d::Zero();
-                          for (int k = incidenceStart[v]; k < incidenceStart[v + 1]; ++k) {
-                            const int tet = incidence[k] >> 2;
-                            const int corner = incidence[k] & 3;
-                            sum.noalias() +=
-                                rest.volumes[tet] *
-                                (targets[tet] * cornerGradient(rest.inverseEdges[tet], corner));
+                          Eigen::RowVector3d sum = Eigen::RowVector3d::Zero();
+                          for (int c = 0; c < kRhsChunks; ++c) {
+                            if (v >= chunkLow[c] && v < chunkHigh[c]) {
+                              sum += buffer.row(chunkOffset[c] + v - chunkLow[c]);
+                            }
                           }
-                          rhs.row(rowOf.empty() ? r : rowOf[r]) = sum.transpose();
+                          rhs.row(rowOf.empty() ? r : rowOf[r]) = sum;
                         }
                       });
   }
@@ -177,6 +206,7 @@ struct StitchWorkspace::Impl {
   // per free vertex: in the factor's (permuted) order for CHOLMOD, in
   // reduced order for SimplicialLDLT.
   RowMatrix3 values;
+  RowMatrix3 chunkSums;  // per-chunk right-hand-side sums (see assembleRhs)
 #ifdef TETBLEND_HAVE_CHOLMOD
   stitch_detail::SupernodalWorkspace workspace;
 #endif
@@ -195,7 +225,7 @@ StitchSolver::StitchSolver(const TetMesh& rest, const StitchOptions& options)
   m.rest = restTetData(rest);
   const int vertexCount = static_cast<int>(rest.vertices.rows());
   m.buildComponents(vertexCount);
-  m.buildIncidence(vertexCount);
+  m.buildChunks();
   SparseMatrix matrix = m.reducedNormalMatrix();
 #ifdef TETBLEND_HAVE_CHOLMOD
   if (options.backend == StitchBackend::kCholmodSupernodal && matrix.rows() > 0) {
@@ -274,7 +304,7 @@ void StitchSolver::solveInto(const std::vector<Eigen::Matrix3d>& targets,
 #ifdef TETBLEND_HAVE_CHOLMOD
   if (m.backend == StitchBackend::kCholmodSupernodal) {
     w.values.resize(freeCount, 3);
-    m.assembleRhs(targets, m.factorRow, w.values);
+    m.assembleRhs(targets, m.factorRow, w.chunkSums, w.values);
     if (timings != nullptr) timings->rhsSeconds = secondsSince(start);
     start = Clock::now();
     m.supernodal->solve(w.values, w.workspace);
@@ -283,7 +313,7 @@ void StitchSolver::solveInto(const std::vector<Eigen::Matrix3d>& targets,
 #endif
   if (m.backend == StitchBackend::kEigenSimplicialLdlt) {
     w.values.resize(freeCount, 3);
-    m.assembleRhs(targets, {}, w.values);
+    m.assembleRhs(targets, {}, w.chunkSums, w.values);
     if (timings != nullptr) timings->rhsSeconds = secondsSince(start);
     start = Clock::now();
     w.solution = m.ldlt.solve(w.values);

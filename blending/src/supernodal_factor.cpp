@@ -1,5 +1,6 @@
 #include "supernodal_factor.h"
 
+#include <cholmod.h>
 #include <tbb/parallel_invoke.h>
 
 #include <algorithm>
@@ -11,10 +12,118 @@
 namespace tetblend {
 namespace stitch_detail {
 
+namespace {
+
+using UpdateMatrix = Eigen::Matrix<double, Eigen::Dynamic, 3>;
+
+// Off-diagonal blocks with at least this many entries are split over two
+// threads in the sequential top of the elimination tree (below it, the two
+// halves of the tree already run concurrently).
+constexpr int64_t kParallelEntries = 1 << 15;
+
+// Entries before column c in the packed lower triangle of a block of
+// `columns` columns (column c holds rows c..columns-1).
+inline int64_t triangleOffset(int c, int columns) {
+  return static_cast<int64_t>(c) * columns - static_cast<int64_t>(c) * (c - 1) / 2;
+}
+
+inline int64_t triangleSize(int columns) { return triangleOffset(columns, columns); }
+
+// Analyses and factors `view` with CHOLMOD; returns the factor or throws.
+cholmod_factor* cholmodFactor(cholmod_sparse& view, cholmod_common& common) {
+  cholmod_factor* factor = cholmod_analyze(&view, &common);
+  const bool factored = factor != nullptr && cholmod_factorize(&view, factor, &common) &&
+                        common.status == CHOLMOD_OK && factor->minor >= factor->n;
+  if (!factored || !factor->is_super || !factor->is_ll) {
+    if (factor != nullptr) cholmod_free_factor(&factor, &common);
+    cholmod_finish(&common);
+    throw NumericalError(
+        "stitch: CHOLMOD could not factor G^T W G as supernodal LL^T (the rest mesh may have "
+        "near-degenerate tets)");
+  }
+  return factor;
+}
+
+// u[i0, i1) += L21[i0, i1) X for the `columns` columns of a supernode's
+// off-diagonal block (below by columns, column-major) and its solved rows X
+// (x, y, z interleaved), four columns at a time so u is read and written once
+// per four entries; x, y and z of u are separate arrays, so the row loop
+// vectorises.
+void addProduct(const double* block, int below, const double* x, int columns, int i0, int i1,
+                double* __restrict ux, double* __restrict uy, double* __restrict uz) {
+  int c = 0;
+  for (; c + 4 <= columns; c += 4) {
+    const double* __restrict p0 = block + static_cast<int64_t>(c) * below;
+    const double* __restrict p1 = p0 + below;
+    const double* __restrict p2 = p1 + below;
+    const double* __restrict p3 = p2 + below;
+    const double* a = x + 3 * c;
+    const double a0 = a[0], a1 = a[1], a2 = a[2], a3 = a[3], a4 = a[4], a5 = a[5];
+    const double a6 = a[6], a7 = a[7], a8 = a[8], a9 = a[9], a10 = a[10], a11 = a[11];
+    for (int i = i0; i < i1; ++i) {
+      ux[i] += p0[i] * a0 + p1[i] * a3 + p2[i] * a6 + p3[i] * a9;
+      uy[i] += p0[i] * a1 + p1[i] * a4 + p2[i] * a7 + p3[i] * a10;
+      uz[i] += p0[i] * a2 + p1[i] * a5 + p2[i] * a8 + p3[i] * a11;
+    }
+  }
+  for (; c < columns; ++c) {
+    const double* __restrict p0 = block + static_cast<int64_t>(c) * below;
+    const double a0 = x[3 * c], a1 = x[3 * c + 1], a2 = x[3 * c + 2];
+    for (int i = i0; i < i1; ++i) {
+      ux[i] += p0[i] * a0;
+      uy[i] += p0[i] * a1;
+      uz[i] += p0[i] * a2;
+    }
+  }
+}
+
+// x[c] -= L21(:, c)^T u for columns [c0, c1) of a supernode's off-diagonal
+// block (below by columns, column-major), two columns at a time.
+void subtractDots(const double* block, int below, double* x, int c0, int c1,
+                  const double* __restrict ux, const double* __restrict uy,
+                  const double* __restrict uz) {
+  int c = c0;
+  for (; c + 2 <= c1; c += 2) {
+    const double* __restrict p0 = block + static_cast<int64_t>(c) * below;
+    const double* __restrict p1 = p0 + below;
+    double s00 = 0, s01 = 0, s02 = 0, s10 = 0, s11 = 0, s12 = 0;
+    for (int i = 0; i < below; ++i) {
+      s00 += p0[i] * ux[i];
+      s01 += p0[i] * uy[i];
+      s02 += p0[i] * uz[i];
+      s10 += p1[i] * ux[i];
+      s11 += p1[i] * uy[i];
+      s12 += p1[i] * uz[i];
+    }
+    double* a = x + 3 * c;
+    a[0] -= s00;
+    a[1] -= s01;
+    a[2] -= s02;
+    a[3] -= s10;
+    a[4] -= s11;
+    a[5] -= s12;
+  }
+  for (; c < c1; ++c) {
+    const double* __restrict p0 = block + static_cast<int64_t>(c) * below;
+    double s0 = 0, s1 = 0, s2 = 0;
+    for (int i = 0; i < below; ++i) {
+      s0 += p0[i] * ux[i];
+      s1 += p0[i] * uy[i];
+      s2 += p0[i] * uz[i];
+    }
+    x[3 * c] -= s0;
+    x[3 * c + 1] -= s1;
+    x[3 * c + 2] -= s2;
+  }
+}
+
+}  // namespace
+
 SupernodalFactor::SupernodalFactor(Eigen::SparseMatrix<double>& lower) {
-  cholmod_start(&common_);
-  common_.print = 0;  // library code never prints; failures are thrown below
-  common_.supernodal = CHOLMOD_SUPERNODAL;
+  cholmod_common common{};
+  cholmod_start(&common);
+  common.print = 0;  // library code never prints; failures are thrown below
+  common.supernodal = CHOLMOD_SUPERNODAL;
   cholmod_sparse view{};
   view.nrow = view.ncol = static_cast<size_t>(lower.rows());
   view.nzmax = static_cast<size_t>(lower.nonZeros());
@@ -27,110 +136,142 @@ SupernodalFactor::SupernodalFactor(Eigen::SparseMatrix<double>& lower) {
   view.dtype = CHOLMOD_DOUBLE;
   view.sorted = 1;
   view.packed = 1;
-  factor_ = cholmod_analyze(&view, &common_);
-  const bool factored = factor_ != nullptr && cholmod_factorize(&view, factor_, &common_) &&
-                        common_.status == CHOLMOD_OK && factor_->minor >= factor_->n;
-  if (!factored || !factor_->is_super || !factor_->is_ll) {
-    if (factor_ != nullptr) cholmod_free_factor(&factor_, &common_);
-    cholmod_finish(&common_);
-    throw NumericalError(
-        "stitch: CHOLMOD could not factor G^T W G as supernodal LL^T (the rest mesh may have "
-        "near-degenerate tets)");
+  cholmod_factor* factor = cholmodFactor(view, common);
+  const auto nsuper = static_cast<int>(factor->nsuper);
+  const auto* super = static_cast<const int*>(factor->super);
+  const auto* pi = static_cast<const int*>(factor->pi);
+  const auto* px = static_cast<const int*>(factor->px);
+  const auto* rowIndex = static_cast<const int*>(factor->s);
+  const auto* values = static_cast<const double*>(factor->x);
+  const auto* perm = static_cast<const int*>(factor->Perm);
+  perm_.assign(perm, perm + factor->n);
+  super_.assign(super, super + nsuper + 1);
+  rowStart_.assign(nsuper + 1, 0);
+  valueStart_.assign(nsuper + 1, 0);
+  for (int s = 0; s < nsuper; ++s) {
+    const int columns = super[s + 1] - super[s], below = (pi[s + 1] - pi[s]) - columns;
+    rowStart_[s + 1] = rowStart_[s] + below;
+    valueStart_[s + 1] =
+        valueStart_[s] + triangleSize(columns) + static_cast<int64_t>(below) * columns;
+    maxUpdateRows_ = std::max<Eigen::Index>(maxUpdateRows_, below);
   }
+  rows_.resize(rowStart_[nsuper]);
+  values_.resize(valueStart_[nsuper]);
+  for (int s = 0; s < nsuper; ++s) {
+    const int columns = super[s + 1] - super[s], height = pi[s + 1] - pi[s];
+    const int below = height - columns;
+    std::copy(rowIndex + pi[s] + columns, rowIndex + pi[s + 1], rows_.begin() + rowStart_[s]);
+    const double* block = values + px[s];  // column-major, height by columns
+    double* triangle = values_.data() + valueStart_[s];
+    double* offDiagonal = triangle + triangleSize(columns);
+    for (int c = 0; c < columns; ++c) {
+      const double* column = block + static_cast<int64_t>(c) * height;
+      std::copy(column + c, column + columns, triangle + triangleOffset(c, columns));
+      std::copy(column + columns, column + height, offDiagonal + static_cast<int64_t>(c) * below);
+    }
+  }
+  cholmod_free_factor(&factor, &common);
+  cholmod_finish(&common);
   findSplit();
-  const auto* super = static_cast<const int*>(factor_->super);
-  const auto* pi = static_cast<const int*>(factor_->pi);
-  for (size_t s = 0; s < factor_->nsuper; ++s) {
-    maxUpdateRows_ =
-        std::max<Eigen::Index>(maxUpdateRows_, (pi[s + 1] - pi[s]) - (super[s + 1] - super[s]));
-  }
 }
 
-SupernodalFactor::~SupernodalFactor() {
-  cholmod_free_factor(&factor_, &common_);
-  cholmod_finish(&common_);
+double SupernodalFactor::bytes() const {
+  return static_cast<double>(sizeof(double) * values_.size() +
+                             sizeof(int) *
+                                 (perm_.size() + super_.size() + rowStart_.size() + rows_.size()) +
+                             sizeof(int64_t) * valueStart_.size());
 }
 
 // Forward substitution L y = b over supernodes [begin, end); updates of
 // rows >= sharedRow go to `shared` (rows relative to sharedRow) instead.
-void SupernodalFactor::forward(int begin, int end, double* yv, double* u, int sharedRow,
-                               double* shared) const {
-  const cholmod_factor& f = *factor_;
-  const auto* super = static_cast<const int*>(f.super);
-  const auto* pi = static_cast<const int*>(f.pi);
-  const auto* px = static_cast<const int*>(f.px);
-  const auto* rowIndex = static_cast<const int*>(f.s);
-  const auto* values = static_cast<const double*>(f.x);
+// Per supernode: the triangle by columns, then u = L21 X four columns at a
+// time (x, y and z of u as separate arrays, so the row loop vectorises).
+void SupernodalFactor::forward(int begin, int end, double* yv, UpdateMatrix& u, int sharedRow,
+                               double* shared, bool parallel) const {
+  const Eigen::Index ld = u.rows();
+  double* ux = u.data();
+  double* uy = ux + ld;
+  double* uz = uy + ld;
   for (int s = begin; s < end; ++s) {
-    const int first = super[s], columns = super[s + 1] - first;
-    const int height = pi[s + 1] - pi[s], below = height - columns;
-    const double* block = values + px[s];  // column-major, height by columns
-    double* x = yv + 3 * static_cast<Eigen::Index>(first);
-    std::fill(u, u + 3 * below, 0.0);
+    const int first = super_[s], columns = super_[s + 1] - first;
+    const int below = rowStart_[s + 1] - rowStart_[s];
+    const double* triangle = values_.data() + valueStart_[s];
+    double* x = yv + 3 * static_cast<int64_t>(first);
     for (int c = 0; c < columns; ++c) {
-      const double* column = block + static_cast<Eigen::Index>(c) * height;
-      const double inverse = 1.0 / column[c];
+      const double* column = triangle + triangleOffset(c, columns);
+      const double inverse = 1.0 / column[0];
       const double x0 = x[3 * c] *= inverse, x1 = x[3 * c + 1] *= inverse,
                    x2 = x[3 * c + 2] *= inverse;
-      for (int i = c + 1; i < columns; ++i) {
-        x[3 * i] -= column[i] * x0;
-        x[3 * i + 1] -= column[i] * x1;
-        x[3 * i + 2] -= column[i] * x2;
-      }
-      const double* lower = column + columns;
-      for (int i = 0; i < below; ++i) {
-        u[3 * i] += lower[i] * x0;
-        u[3 * i + 1] += lower[i] * x1;
-        u[3 * i + 2] += lower[i] * x2;
+      for (int i = 1; i < columns - c; ++i) {
+        x[3 * (c + i)] -= column[i] * x0;
+        x[3 * (c + i) + 1] -= column[i] * x1;
+        x[3 * (c + i) + 2] -= column[i] * x2;
       }
     }
-    const int* target = rowIndex + pi[s] + columns;
+    if (below == 0) continue;
+    std::fill(ux, ux + below, 0.0);
+    std::fill(uy, uy + below, 0.0);
+    std::fill(uz, uz + below, 0.0);
+    const double* block = triangle + triangleSize(columns);
+    if (parallel && static_cast<int64_t>(below) * columns >= kParallelEntries) {
+      const int half = below / 2;
+      tbb::parallel_invoke([&] { addProduct(block, below, x, columns, 0, half, ux, uy, uz); },
+                           [&] { addProduct(block, below, x, columns, half, below, ux, uy, uz); });
+    } else {
+      addProduct(block, below, x, columns, 0, below, ux, uy, uz);
+    }
+    const int* target = rows_.data() + rowStart_[s];
     for (int i = 0; i < below; ++i) {
       double* row = target[i] < sharedRow
-                        ? yv + 3 * static_cast<Eigen::Index>(target[i])
-                        : shared + 3 * static_cast<Eigen::Index>(target[i] - sharedRow);
-      row[0] -= u[3 * i];
-      row[1] -= u[3 * i + 1];
-      row[2] -= u[3 * i + 2];
+                        ? yv + 3 * static_cast<int64_t>(target[i])
+                        : shared + 3 * static_cast<int64_t>(target[i] - sharedRow);
+      row[0] -= ux[i];
+      row[1] -= uy[i];
+      row[2] -= uz[i];
     }
   }
 }
 
-// Back substitution L^T x = y over supernodes [begin, end), in reverse.
-void SupernodalFactor::backward(int begin, int end, double* yv, double* u) const {
-  const cholmod_factor& f = *factor_;
-  const auto* super = static_cast<const int*>(f.super);
-  const auto* pi = static_cast<const int*>(f.pi);
-  const auto* px = static_cast<const int*>(f.px);
-  const auto* rowIndex = static_cast<const int*>(f.s);
-  const auto* values = static_cast<const double*>(f.x);
+// Back substitution L^T x = y over supernodes [begin, end), in reverse: per
+// supernode x -= L21^T u (u the gathered rows below it, four columns at a
+// time), then the triangle by columns.
+void SupernodalFactor::backward(int begin, int end, double* yv, UpdateMatrix& u,
+                                bool parallel) const {
+  const Eigen::Index ld = u.rows();
+  double* ux = u.data();
+  double* uy = ux + ld;
+  double* uz = uy + ld;
   for (int s = end - 1; s >= begin; --s) {
-    const int first = super[s], columns = super[s + 1] - first;
-    const int height = pi[s + 1] - pi[s], below = height - columns;
-    const double* block = values + px[s];
-    double* x = yv + 3 * static_cast<Eigen::Index>(first);
-    const int* source = rowIndex + pi[s] + columns;
-    for (int i = 0; i < below; ++i) {
-      const double* row = yv + 3 * static_cast<Eigen::Index>(source[i]);
-      u[3 * i] = row[0];
-      u[3 * i + 1] = row[1];
-      u[3 * i + 2] = row[2];
+    const int first = super_[s], columns = super_[s + 1] - first;
+    const int below = rowStart_[s + 1] - rowStart_[s];
+    const double* triangle = values_.data() + valueStart_[s];
+    double* x = yv + 3 * static_cast<int64_t>(first);
+    if (below > 0) {
+      const int* source = rows_.data() + rowStart_[s];
+      for (int i = 0; i < below; ++i) {
+        const double* row = yv + 3 * static_cast<int64_t>(source[i]);
+        ux[i] = row[0];
+        uy[i] = row[1];
+        uz[i] = row[2];
+      }
+      const double* block = triangle + triangleSize(columns);
+      if (parallel && static_cast<int64_t>(below) * columns >= kParallelEntries) {
+        const int half = (columns / 4) * 2;
+        tbb::parallel_invoke([&] { subtractDots(block, below, x, 0, half, ux, uy, uz); },
+                             [&] { subtractDots(block, below, x, half, columns, ux, uy, uz); });
+      } else {
+        subtractDots(block, below, x, 0, columns, ux, uy, uz);
+      }
     }
     for (int c = columns - 1; c >= 0; --c) {
-      const double* column = block + static_cast<Eigen::Index>(c) * height;
+      const double* column = triangle + triangleOffset(c, columns);
       double x0 = x[3 * c], x1 = x[3 * c + 1], x2 = x[3 * c + 2];
-      for (int i = c + 1; i < columns; ++i) {
-        x0 -= column[i] * x[3 * i];
-        x1 -= column[i] * x[3 * i + 1];
-        x2 -= column[i] * x[3 * i + 2];
+      for (int i = 1; i < columns - c; ++i) {
+        x0 -= column[i] * x[3 * (c + i)];
+        x1 -= column[i] * x[3 * (c + i) + 1];
+        x2 -= column[i] * x[3 * (c + i) + 2];
       }
-      const double* lower = column + columns;
-      for (int i = 0; i < below; ++i) {
-        x0 -= lower[i] * u[3 * i];
-        x1 -= lower[i] * u[3 * i + 1];
-        x2 -= lower[i] * u[3 * i + 2];
-      }
-      const double inverse = 1.0 / column[c];
+      const double inverse = 1.0 / column[0];
       x[3 * c] = x0 * inverse;
       x[3 * c + 1] = x1 * inverse;
       x[3 * c + 2] = x2 * inverse;
@@ -148,29 +289,29 @@ void SupernodalFactor::backward(int begin, int end, double* yv, double* u) const
 void SupernodalFactor::solve(RowMatrix3& y, SupernodalWorkspace& workspace) const {
   auto& update = workspace.update;
   auto& shared = workspace.shared;
-  const auto nsuper = static_cast<int>(factor_->nsuper);
-  const auto* super = static_cast<const int*>(factor_->super);
-  for (auto& u : update) u.resize(maxUpdateRows_, 3);
+  const auto nsuper = static_cast<int>(super_.size()) - 1;
+  const int* super = super_.data();
+  for (auto& u : update) u.resize(std::max<Eigen::Index>(maxUpdateRows_, 1), 3);
   double* yv = y.data();
   const auto n = static_cast<int>(y.rows());
   if (split_ <= 0) {
-    forward(0, nsuper, yv, update[0].data(), n, nullptr);
-    backward(0, nsuper, yv, update[0].data());
+    forward(0, nsuper, yv, update[0], n, nullptr, true);
+    backward(0, nsuper, yv, update[0], true);
     return;
   }
   const int topRow = super[top_];
   for (auto& b : shared) b.setZero(n - topRow, 3);
-  forward(0, low_, yv, update[0].data(), n, nullptr);
+  forward(0, low_, yv, update[0], n, nullptr, true);
   tbb::parallel_invoke(
-      [&] { forward(low_, split_, yv, update[0].data(), topRow, shared[0].data()); },
-      [&] { forward(split_, top_, yv, update[1].data(), topRow, shared[1].data()); });
+      [&] { forward(low_, split_, yv, update[0], topRow, shared[0].data(), false); },
+      [&] { forward(split_, top_, yv, update[1], topRow, shared[1].data(), false); });
   y.bottomRows(n - topRow) += shared[0];
   y.bottomRows(n - topRow) += shared[1];
-  forward(top_, nsuper, yv, update[0].data(), n, nullptr);
-  backward(top_, nsuper, yv, update[0].data());
-  tbb::parallel_invoke([&] { backward(low_, split_, yv, update[0].data()); },
-                       [&] { backward(split_, top_, yv, update[1].data()); });
-  backward(0, low_, yv, update[0].data());
+  forward(top_, nsuper, yv, update[0], n, nullptr, true);
+  backward(top_, nsuper, yv, update[0], true);
+  tbb::parallel_invoke([&] { backward(low_, split_, yv, update[0], false); },
+                       [&] { backward(split_, top_, yv, update[1], false); });
+  backward(0, low_, yv, update[0], true);
 }
 
 // Chooses `top_`, `low_` and `split_`: from the last root, descend into the
@@ -178,22 +319,18 @@ void SupernodalFactor::solve(RowMatrix3& y, SupernodalWorkspace& workspace) cons
 // splits top_'s child subtrees [low_, top_) at the boundary closest to half of
 // their entries. split_ = 0 (sequential) when no balanced split exists.
 void SupernodalFactor::findSplit() {
-  const cholmod_factor& f = *factor_;
-  const auto nsuper = static_cast<int>(f.nsuper);
-  const auto* super = static_cast<const int*>(f.super);
-  const auto* pi = static_cast<const int*>(f.pi);
-  const auto* px = static_cast<const int*>(f.px);
-  const auto* rowIndex = static_cast<const int*>(f.s);
+  const auto nsuper = static_cast<int>(super_.size()) - 1;
+  const int* super = super_.data();
+  const int64_t* px = valueStart_.data();
   if (nsuper < 3) return;
-  std::vector<int> column(f.n), parent(nsuper, -1), first(nsuper);
+  std::vector<int> column(perm_.size()), parent(nsuper, -1), first(nsuper);
   for (int s = 0; s < nsuper; ++s) {
     first[s] = s;
     for (int c = super[s]; c < super[s + 1]; ++c) column[c] = s;
   }
   for (int s = 0; s < nsuper; ++s) {
-    const int columns = super[s + 1] - super[s];
-    if (pi[s + 1] - pi[s] == columns) continue;
-    parent[s] = column[rowIndex[pi[s] + columns]];
+    if (rowStart_[s + 1] == rowStart_[s]) continue;
+    parent[s] = column[rows_[rowStart_[s]]];
     if (parent[s] <= s) return;  // not postordered: stay sequential
     first[parent[s]] = std::min(first[parent[s]], first[s]);
   }
