@@ -77,43 +77,86 @@ void addProduct(const double* block, int below, const double* x, int columns, in
   }
 }
 
-// x[c] -= L21(:, c)^T u for columns [c0, c1) of a supernode's off-diagonal
-// block (below by columns, column-major), two columns at a time.
-void subtractDots(const double* block, int below, double* x, int c0, int c1,
-                  const double* __restrict ux, const double* __restrict uy,
-                  const double* __restrict uz) {
-  int c = c0;
-  for (; c + 2 <= c1; c += 2) {
-    const double* __restrict p0 = block + static_cast<int64_t>(c) * below;
-    const double* __restrict p1 = p0 + below;
-    double s00 = 0, s01 = 0, s02 = 0, s10 = 0, s11 = 0, s12 = 0;
-    for (int i = 0; i < below; ++i) {
-      s00 += p0[i] * ux[i];
-      s01 += p0[i] * uy[i];
-      s02 += p0[i] * uz[i];
-      s10 += p1[i] * ux[i];
-      s11 += p1[i] * uy[i];
-      s12 += p1[i] * uz[i];
-    }
-    double* a = x + 3 * c;
-    a[0] -= s00;
-    a[1] -= s01;
-    a[2] -= s02;
-    a[3] -= s10;
-    a[4] -= s11;
-    a[5] -= s12;
+// out[d] = sum_i p[i] u_d[i] for i in [0, n), d = x, y, z, two rows per step
+// (SSE2 lanes) with the odd row last.
+inline void dot3(const double* __restrict p, const double* __restrict ux,
+                 const double* __restrict uy, const double* __restrict uz, int n, double out[3]) {
+  using Lanes = Eigen::Array2d;
+  Lanes sx = Lanes::Zero(), sy = Lanes::Zero(), sz = Lanes::Zero();
+  int i = 0;
+  for (; i + 2 <= n; i += 2) {
+    const Lanes l = Lanes::Map(p + i);
+    sx += l * Lanes::Map(ux + i);
+    sy += l * Lanes::Map(uy + i);
+    sz += l * Lanes::Map(uz + i);
   }
-  for (; c < c1; ++c) {
-    const double* __restrict p0 = block + static_cast<int64_t>(c) * below;
-    double s0 = 0, s1 = 0, s2 = 0;
-    for (int i = 0; i < below; ++i) {
-      s0 += p0[i] * ux[i];
-      s1 += p0[i] * uy[i];
-      s2 += p0[i] * uz[i];
+  out[0] = sx.sum();
+  out[1] = sy.sum();
+  out[2] = sz.sum();
+  if (i < n) {
+    out[0] += p[i] * ux[i];
+    out[1] += p[i] * uy[i];
+    out[2] += p[i] * uz[i];
+  }
+}
+
+// x[c] -= L21(:, c)^T u for columns [c0, c1) of a supernode's off-diagonal
+// block (below by columns, column-major).
+void subtractDots(const double* block, int below, double* x, int c0, int c1, const double* ux,
+                  const double* uy, const double* uz) {
+  for (int c = c0; c < c1; ++c) {
+    double sum[3];
+    dot3(block + static_cast<int64_t>(c) * below, ux, uy, uz, below, sum);
+    x[3 * c] -= sum[0];
+    x[3 * c + 1] -= sum[1];
+    x[3 * c + 2] -= sum[2];
+  }
+}
+
+// The diagonal block's triangle (packed by columns) on a supernode's rows,
+// x, y and z as separate arrays tx, ty, tz of `columns` entries.
+// Forward: L11 t = t by columns (axpy form).
+void triangleForward(const double* triangle, int columns, double* __restrict tx,
+                     double* __restrict ty, double* __restrict tz) {
+  for (int c = 0; c < columns; ++c) {
+    const double* __restrict column = triangle + triangleOffset(c, columns);
+    const double inverse = 1.0 / column[0];
+    const double a0 = tx[c] *= inverse, a1 = ty[c] *= inverse, a2 = tz[c] *= inverse;
+    for (int i = 1; i < columns - c; ++i) {
+      tx[c + i] -= column[i] * a0;
+      ty[c + i] -= column[i] * a1;
+      tz[c + i] -= column[i] * a2;
     }
-    x[3 * c] -= s0;
-    x[3 * c + 1] -= s1;
-    x[3 * c + 2] -= s2;
+  }
+}
+
+// Backward: L11^T t = t, last column first (dot form).
+void triangleBackward(const double* triangle, int columns, double* tx, double* ty, double* tz) {
+  for (int c = columns - 1; c >= 0; --c) {
+    const double* column = triangle + triangleOffset(c, columns);
+    double sum[3];
+    dot3(column + 1, tx + c + 1, ty + c + 1, tz + c + 1, columns - c - 1, sum);
+    const double inverse = 1.0 / column[0];
+    tx[c] = (tx[c] - sum[0]) * inverse;
+    ty[c] = (ty[c] - sum[1]) * inverse;
+    tz[c] = (tz[c] - sum[2]) * inverse;
+  }
+}
+
+// Copies a supernode's `columns` rows of x (x, y, z interleaved) to the
+// separate arrays t (leading dimension ld), or back.
+void toColumns(const double* x, int columns, double* t, Eigen::Index ld) {
+  for (int c = 0; c < columns; ++c) {
+    t[c] = x[3 * c];
+    t[ld + c] = x[3 * c + 1];
+    t[2 * ld + c] = x[3 * c + 2];
+  }
+}
+void fromColumns(const double* t, Eigen::Index ld, int columns, double* x) {
+  for (int c = 0; c < columns; ++c) {
+    x[3 * c] = t[c];
+    x[3 * c + 1] = t[ld + c];
+    x[3 * c + 2] = t[2 * ld + c];
   }
 }
 
@@ -154,6 +197,7 @@ SupernodalFactor::SupernodalFactor(Eigen::SparseMatrix<double>& lower) {
     valueStart_[s + 1] =
         valueStart_[s] + triangleSize(columns) + static_cast<int64_t>(below) * columns;
     maxUpdateRows_ = std::max<Eigen::Index>(maxUpdateRows_, below);
+    maxColumns_ = std::max<Eigen::Index>(maxColumns_, columns);
   }
   rows_.resize(rowStart_[nsuper]);
   values_.resize(valueStart_[nsuper]);
@@ -186,9 +230,9 @@ double SupernodalFactor::bytes() const {
 // rows >= sharedRow go to `shared` (rows relative to sharedRow) instead.
 // Per supernode: the triangle by columns, then u = L21 X four columns at a
 // time (x, y and z of u as separate arrays, so the row loop vectorises).
-void SupernodalFactor::forward(int begin, int end, double* yv, UpdateMatrix& u, int sharedRow,
-                               double* shared, bool parallel) const {
-  const Eigen::Index ld = u.rows();
+void SupernodalFactor::forward(int begin, int end, double* yv, UpdateMatrix& u, UpdateMatrix& t,
+                               int sharedRow, double* shared, bool parallel) const {
+  const Eigen::Index ld = u.rows(), tld = t.rows();
   double* ux = u.data();
   double* uy = ux + ld;
   double* uz = uy + ld;
@@ -197,17 +241,9 @@ void SupernodalFactor::forward(int begin, int end, double* yv, UpdateMatrix& u, 
     const int below = rowStart_[s + 1] - rowStart_[s];
     const double* triangle = values_.data() + valueStart_[s];
     double* x = yv + 3 * static_cast<int64_t>(first);
-    for (int c = 0; c < columns; ++c) {
-      const double* column = triangle + triangleOffset(c, columns);
-      const double inverse = 1.0 / column[0];
-      const double x0 = x[3 * c] *= inverse, x1 = x[3 * c + 1] *= inverse,
-                   x2 = x[3 * c + 2] *= inverse;
-      for (int i = 1; i < columns - c; ++i) {
-        x[3 * (c + i)] -= column[i] * x0;
-        x[3 * (c + i) + 1] -= column[i] * x1;
-        x[3 * (c + i) + 2] -= column[i] * x2;
-      }
-    }
+    toColumns(x, columns, t.data(), tld);
+    triangleForward(triangle, columns, t.data(), t.data() + tld, t.data() + 2 * tld);
+    fromColumns(t.data(), tld, columns, x);
     if (below == 0) continue;
     std::fill(ux, ux + below, 0.0);
     std::fill(uy, uy + below, 0.0);
@@ -235,9 +271,9 @@ void SupernodalFactor::forward(int begin, int end, double* yv, UpdateMatrix& u, 
 // Back substitution L^T x = y over supernodes [begin, end), in reverse: per
 // supernode x -= L21^T u (u the gathered rows below it, four columns at a
 // time), then the triangle by columns.
-void SupernodalFactor::backward(int begin, int end, double* yv, UpdateMatrix& u,
+void SupernodalFactor::backward(int begin, int end, double* yv, UpdateMatrix& u, UpdateMatrix& t,
                                 bool parallel) const {
-  const Eigen::Index ld = u.rows();
+  const Eigen::Index ld = u.rows(), tld = t.rows();
   double* ux = u.data();
   double* uy = ux + ld;
   double* uz = uy + ld;
@@ -256,26 +292,16 @@ void SupernodalFactor::backward(int begin, int end, double* yv, UpdateMatrix& u,
       }
       const double* block = triangle + triangleSize(columns);
       if (parallel && static_cast<int64_t>(below) * columns >= kParallelEntries) {
-        const int half = (columns / 4) * 2;
+        const int half = columns / 2;
         tbb::parallel_invoke([&] { subtractDots(block, below, x, 0, half, ux, uy, uz); },
                              [&] { subtractDots(block, below, x, half, columns, ux, uy, uz); });
       } else {
         subtractDots(block, below, x, 0, columns, ux, uy, uz);
       }
     }
-    for (int c = columns - 1; c >= 0; --c) {
-      const double* column = triangle + triangleOffset(c, columns);
-      double x0 = x[3 * c], x1 = x[3 * c + 1], x2 = x[3 * c + 2];
-      for (int i = 1; i < columns - c; ++i) {
-        x0 -= column[i] * x[3 * (c + i)];
-        x1 -= column[i] * x[3 * (c + i) + 1];
-        x2 -= column[i] * x[3 * (c + i) + 2];
-      }
-      const double inverse = 1.0 / column[0];
-      x[3 * c] = x0 * inverse;
-      x[3 * c + 1] = x1 * inverse;
-      x[3 * c + 2] = x2 * inverse;
-    }
+    toColumns(x, columns, t.data(), tld);
+    triangleBackward(triangle, columns, t.data(), t.data() + tld, t.data() + 2 * tld);
+    fromColumns(t.data(), tld, columns, x);
   }
 }
 
@@ -288,30 +314,32 @@ void SupernodalFactor::backward(int begin, int end, double* yv, UpdateMatrix& u,
 // (deterministic). Supernodes outside top_'s subtree run sequentially.
 void SupernodalFactor::solve(RowMatrix3& y, SupernodalWorkspace& workspace) const {
   auto& update = workspace.update;
+  auto& column = workspace.columns;
   auto& shared = workspace.shared;
   const auto nsuper = static_cast<int>(super_.size()) - 1;
   const int* super = super_.data();
   for (auto& u : update) u.resize(std::max<Eigen::Index>(maxUpdateRows_, 1), 3);
+  for (auto& t : column) t.resize(std::max<Eigen::Index>(maxColumns_, 1), 3);
   double* yv = y.data();
   const auto n = static_cast<int>(y.rows());
   if (split_ <= 0) {
-    forward(0, nsuper, yv, update[0], n, nullptr, true);
-    backward(0, nsuper, yv, update[0], true);
+    forward(0, nsuper, yv, update[0], column[0], n, nullptr, true);
+    backward(0, nsuper, yv, update[0], column[0], true);
     return;
   }
   const int topRow = super[top_];
   for (auto& b : shared) b.setZero(n - topRow, 3);
-  forward(0, low_, yv, update[0], n, nullptr, true);
+  forward(0, low_, yv, update[0], column[0], n, nullptr, true);
   tbb::parallel_invoke(
-      [&] { forward(low_, split_, yv, update[0], topRow, shared[0].data(), false); },
-      [&] { forward(split_, top_, yv, update[1], topRow, shared[1].data(), false); });
+      [&] { forward(low_, split_, yv, update[0], column[0], topRow, shared[0].data(), false); },
+      [&] { forward(split_, top_, yv, update[1], column[1], topRow, shared[1].data(), false); });
   y.bottomRows(n - topRow) += shared[0];
   y.bottomRows(n - topRow) += shared[1];
-  forward(top_, nsuper, yv, update[0], n, nullptr, true);
-  backward(top_, nsuper, yv, update[0], true);
-  tbb::parallel_invoke([&] { backward(low_, split_, yv, update[0], false); },
-                       [&] { backward(split_, top_, yv, update[1], false); });
-  backward(0, low_, yv, update[0], true);
+  forward(top_, nsuper, yv, update[0], column[0], n, nullptr, true);
+  backward(top_, nsuper, yv, update[0], column[0], true);
+  tbb::parallel_invoke([&] { backward(low_, split_, yv, update[0], column[0], false); },
+                       [&] { backward(split_, top_, yv, update[1], column[1], false); });
+  backward(0, low_, yv, update[0], column[0], true);
 }
 
 // Chooses `top_`, `low_` and `split_`: from the last root, descend into the

@@ -26,6 +26,8 @@ struct SupernodalWorkspace {
   /// One supernode's L21 X (forward) or gathered rows (backward), x, y and z
   /// as three columns (structure of arrays), per half of the tree.
   Eigen::Matrix<double, Eigen::Dynamic, 3> update[2];
+  /// One supernode's own rows, x, y and z as three columns, per half.
+  Eigen::Matrix<double, Eigen::Dynamic, 3> columns[2];
   RowMatrix3 shared[2];  ///< each half's forward updates of the top rows
 };
 
@@ -55,9 +57,10 @@ class SupernodalFactor {
   // `parallel`: split large blocks over two threads (only outside the two
   // concurrent halves of the tree).
   void forward(int begin, int end, double* yv, Eigen::Matrix<double, Eigen::Dynamic, 3>& u,
-               int sharedRow, double* shared, bool parallel) const;
+               Eigen::Matrix<double, Eigen::Dynamic, 3>& t, int sharedRow, double* shared,
+               bool parallel) const;
   void backward(int begin, int end, double* yv, Eigen::Matrix<double, Eigen::Dynamic, 3>& u,
-                bool parallel) const;
+                Eigen::Matrix<double, Eigen::Dynamic, 3>& t, bool parallel) const;
   void findSplit();
 
   std::vector<int> perm_;            // n
@@ -67,6 +70,7 @@ class SupernodalFactor {
   std::vector<int64_t> valueStart_;  // nsuper + 1: into values_
   std::vector<double> values_;       // triangle, then L21 (below by columns), per supernode
   Eigen::Index maxUpdateRows_ = 0;   // largest off-diagonal block of a supernode
+  Eigen::Index maxColumns_ = 0;      // widest supernode
   int top_ = 0;                      // see findSplit
   int low_ = 0;
   int split_ = 0;
