@@ -1,14 +1,13 @@
 #pragma once
 // The stitch's supernodal Cholesky factor (private to tetblend_blending):
-// CHOLMOD analyses and factors G^T W G once (supernodal LL^T, CHOLMOD's
-// default ordering strategy: AMD, and METIS too when AMD's fill is high,
-// keeping the sparser factor; on the benchmark's 125k-tet box it selects METIS:
-// 4.9M entries in L against AMD's 7.3M, NESDIS 5.0M); the factor is repacked
+// CHOLMOD analyses and factors G^T W G once (supernodal LL^T, ordered by
+// METIS or AMD, whichever CHOLMOD finds cheaper: METIS on the box grids, 4.9M
+// entries in L against AMD's 7.3M at 23k vertices); the factor is repacked
 // without CHOLMOD's explicit upper triangles (20% fewer stored entries) and
-// the three-column solves are done here from the packed blocks, reading L only. CHOLMOD's own solve
-// goes through the BLAS, whose narrow three-column kernels (ATLAS here) were the bottleneck, and
-// writes its cholmod_common, so concurrent solves would race. Only compiled with
-// TETBLEND_HAVE_CHOLMOD.
+// the three-column solves are done here from the packed blocks, reading L
+// only. CHOLMOD's own solve goes through the BLAS, whose narrow three-column
+// kernels (ATLAS here) were the bottleneck, and writes its cholmod_common, so
+// concurrent solves would race. Only compiled with TETBLEND_HAVE_CHOLMOD.
 
 #include <Eigen/Core>
 #include <Eigen/SparseCore>

@@ -63,13 +63,17 @@ class StitchWorkspace {
 /// its own component); each component's lowest-index vertex is pinned to
 /// remove the translation null space, and after the solve each component is
 /// translated so that its vertex centroid (mean of its vertices) equals the
-/// centroid the caller asks for. solveInto is deterministic (the parallel
-/// right-hand side sums each vertex's tets in a fixed order) and safe to call
-/// concurrently on one solver: the factor is only read (the supernodal solve
-/// is tetblend's own, not cholmod_solve, which writes its cholmod_common),
-/// and every call solves in its own StitchWorkspace, so no lock is taken.
-/// The solve runs the two halves of the elimination tree below a balanced
-/// split on two threads (TBB).
+/// centroid the caller asks for. solveInto is deterministic (the right-hand
+/// side visits each tet once, in a fixed number of tet chunks summed
+/// sequentially and then added per vertex in chunk order, whatever the thread
+/// count) and safe to call concurrently on one solver: the factor is only
+/// read (the supernodal solve is tetblend's own, not cholmod_solve, which
+/// writes its cholmod_common), and every call solves in its own
+/// StitchWorkspace, so no lock is taken. The factor is CHOLMOD's supernodal
+/// LL^T, ordered by METIS or AMD (whichever CHOLMOD finds cheaper; METIS on
+/// the box grids), repacked without explicit zeros above the diagonal; one x/y/z solve reads it
+/// once forward and once backward, with the two halves of the elimination tree below a balanced
+/// split, and the large dense blocks above it, on two threads (TBB).
 class StitchSolver {
  public:
   /// Builds the gradient operator of `rest` (#V by 3 vertices, #T by 4 tets)
@@ -92,8 +96,8 @@ class StitchSolver {
   const Tets& tets() const;
   /// The backend actually used.
   StitchBackend backend() const;
-  /// Stored entries of the Cholesky factor (its memory is about 8 bytes each;
-  /// each solve reads them twice).
+  /// Stored entries of the Cholesky factor (8 bytes each, plus a few percent
+  /// of indices; each solve reads them twice).
   double factorNonzeros() const;
 
   /// Mean of the vertices of each component (#C by 3) of `vertices` (#V by 3).
