@@ -1,9 +1,12 @@
 #include "tetblend/blending/baseline_blend.h"
 
+#include <Eigen/Geometry>
+#include <cmath>
 #include <unsupported/Eigen/MatrixFunctions>
 
 #include "blend_common.h"
 #include "tetblend/core/baselines.h"
+#include "tetblend/core/polar.h"
 
 namespace tetblend {
 namespace {
@@ -85,45 +88,116 @@ class AlexaBlender final : public TetMapBlender {
   std::vector<Eigen::Matrix3d> logs_;  // tet-major
 };
 
-// Polar + quaternion slerp (Shoemake–Duff) via polarSlerpBlend with the rest
-// (identity) as map 0 at weight 1 - sum w. The kernel decomposes its inputs
-// on every call, so this baseline costs n polar decompositions per tet and
-// blend.
+// Polar + quaternion slerp (Shoemake–Duff): the combination of core's
+// polarSlerpBlend, with the rest (identity) as map 0 at weight 1 - sum w, but
+// each example's polar decomposition F = R S done once at preparation. Per
+// tet and example: R's unit quaternion (x, y, z, w, Eigen's coefficient
+// order) and the upper triangle of S (symmetrised). A blend is then one
+// quaternion sum (or a slerp for a single example) and one stretch sum.
+constexpr int kQuaternionSize = 4;
+constexpr int kPolarParamsPerMap = kQuaternionSize + 6;
+
 class PolarSlerpBlender final : public TetMapBlender {
  public:
   explicit PolarSlerpBlender(const BlendInput& input) {
     const auto sizes = blend_detail::checkInput(input);
     tets_ = sizes.tets;
     examples_ = sizes.examples;
-    maps_ = blend_detail::tetMajorGradients(input, sizes);
+    params_.resize(static_cast<size_t>(tets_) * examples_ * kPolarParamsPerMap);
+    for (int k = 0; k < examples_; ++k) {
+      const auto& gradients = (*input.gradients)[k];
+      forEachTet(tets_, [&](int j) {
+        PolarDecomposition polar;
+        try {
+          polar = polarDecompose(gradients[j]);
+        } catch (const DomainError& error) {
+          blend_detail::rethrowForTet("polar-slerp", k, j, error);
+        }
+        double* p = param(j, k);
+        Eigen::Map<Eigen::Vector4d> quaternion(p);
+        quaternion = Eigen::Quaterniond(polar.rotation).coeffs();
+        const Eigen::Matrix3d stretch = 0.5 * (polar.stretch + polar.stretch.transpose());
+        double* y = p + kQuaternionSize;
+        y[0] = stretch(0, 0);
+        y[1] = stretch(0, 1);
+        y[2] = stretch(0, 2);
+        y[3] = stretch(1, 1);
+        y[4] = stretch(1, 2);
+        y[5] = stretch(2, 2);
+      });
+    }
   }
   BlendMethod method() const override { return BlendMethod::kPolarSlerp; }
   void blendTargets(const std::vector<double>& weights,
                     std::vector<Eigen::Matrix3d>& targets) const override {
     checkWeights(weights, examples_);
     targets.resize(tets_);
-    const std::vector<double> allWeights = blend_detail::withRestWeight(weights);
-    tbb::parallel_for(
-        tbb::blocked_range<int>(0, tets_, blend_detail::kTetGrain),
-        [&](const tbb::blocked_range<int>& range) {
-          std::vector<Eigen::Matrix4d> maps(examples_ + 1, Eigen::Matrix4d::Identity());
-          for (int j = range.begin(); j != range.end(); ++j) {
-            for (int k = 0; k < examples_; ++k) {
-              maps[k + 1] = homogeneous(maps_[static_cast<size_t>(j) * examples_ + k]);
-            }
-            try {
-              targets[j] = polarSlerpBlend(allWeights, maps).topLeftCorner<3, 3>();
-            } catch (const DomainError& error) {
-              blend_detail::rethrowForTet("polar-slerp", -1, j, error);
-            }
-          }
-        });
+    const std::vector<double> all = blend_detail::withRestWeight(weights);
+    // polarSlerpBlend's pivot: the map of largest |weight| (first on ties;
+    // index 0 is the rest), the same for every tet.
+    int pivot = 0;
+    for (int i = 1; i <= examples_; ++i) {
+      if (std::abs(all[i]) > std::abs(all[pivot])) pivot = i;
+    }
+    const Eigen::Vector4d identity = Eigen::Quaterniond::Identity().coeffs();
+    forEachTet(tets_, [&](int j) {
+      Eigen::Matrix3d stretch = all[0] * Eigen::Matrix3d::Identity();
+      for (int k = 0; k < examples_; ++k) {
+        const double* y = param(j, k) + kQuaternionSize;
+        Eigen::Matrix3d s;
+        s << y[0], y[1], y[2],  //
+            y[1], y[3], y[4],   //
+            y[2], y[4], y[5];
+        stretch += all[k + 1] * s;
+      }
+      Eigen::Quaterniond rotation;
+      try {
+        rotation = blendedRotation(all, pivot, identity, j);
+      } catch (const DomainError& error) {
+        blend_detail::rethrowForTet("polar-slerp", -1, j, error);
+      }
+      targets[j] = rotation.toRotationMatrix() * stretch;
+    });
   }
 
  private:
+  // Shoemake's slerp between the rest and the one example, or else the
+  // normalised sum of the quaternions sign-aligned with the pivot's.
+  Eigen::Quaterniond blendedRotation(const std::vector<double>& all, int pivot,
+                                     const Eigen::Vector4d& identity, int tet) const {
+    if (examples_ == 1) {
+      const double sum = all[0] + all[1];
+      if (sum == 0.0) {
+        throw DomainError("polarSlerpBlend: the two weights sum to 0; no slerp parameter");
+      }
+      return Eigen::Quaterniond::Identity().slerp(
+          all[1] / sum, Eigen::Quaterniond(Eigen::Map<const Eigen::Vector4d>(param(tet, 0))));
+    }
+    const Eigen::Vector4d pivotQ =
+        pivot == 0 ? identity : Eigen::Map<const Eigen::Vector4d>(param(tet, pivot - 1));
+    Eigen::Vector4d q = (identity.dot(pivotQ) < 0.0 ? -all[0] : all[0]) * identity;
+    for (int k = 0; k < examples_; ++k) {
+      const Eigen::Map<const Eigen::Vector4d> qk(param(tet, k));
+      q += (qk.dot(pivotQ) < 0.0 ? -all[k + 1] : all[k + 1]) * qk;
+    }
+    if (!(q.norm() > 0.0)) {
+      throw DomainError(
+          "polarSlerpBlend: the weighted quaternion sum is zero (cancelling weights); no "
+          "rotation to normalise");
+    }
+    Eigen::Quaterniond rotation;
+    rotation.coeffs() = q.normalized();
+    return rotation;
+  }
+  const double* param(int tet, int example) const {
+    return params_.data() + (static_cast<size_t>(tet) * examples_ + example) * kPolarParamsPerMap;
+  }
+  double* param(int tet, int example) {
+    return params_.data() + (static_cast<size_t>(tet) * examples_ + example) * kPolarParamsPerMap;
+  }
   int tets_ = 0;
   int examples_ = 0;
-  std::vector<Eigen::Matrix3d> maps_;  // tet-major
+  std::vector<double> params_;  // tet-major, kPolarParamsPerMap per example
 };
 
 }  // namespace
