@@ -19,6 +19,7 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
+#include "interior_stiffness.h"
 #include "tet_elements.h"
 #include "tetblend/core/error.h"
 #include "tetblend/core/sym3.h"
@@ -64,9 +65,7 @@ struct CompatibleTetBuilder::Impl {
   int interiorCount = 0;
   CompatibleTetOptions options;
   std::vector<TetElement> elements;
-  Triangles surfaceTriangles;  // boundary of rest, indices < surfaceCount
-  SparseMatrix interiorBlock;  // K_II
-  SparseMatrix couplingBlock;  // K_IB
+  Eigen::SparseMatrix<double, Eigen::RowMajor> couplingBlock;  // K_IB
   // K_II is factored once per rest mesh: CHOLMOD's supernodal LL^T when
   // tetblend is built with CHOLMOD (BLAS-3 on the dense supernodes, many times
   // faster than the simplicial factor at 10^5-10^6 tets), else Eigen's
@@ -78,9 +77,8 @@ struct CompatibleTetBuilder::Impl {
   Eigen::SimplicialLDLT<SparseMatrix> solver;
 #endif
   double diagonal = 0.0;
-  double totalVolume = 0.0;         // Σ_t vol_t
-  std::vector<int> vertexTetStart;  // CSR: tets of vertex v are
-  std::vector<int> vertexTets;      // vertexTets[vertexTetStart[v] .. vertexTetStart[v+1])
+  double totalVolume = 0.0;  // Σ_t vol_t
+  VertexStars stars;
 
   // Interior vertices within `rings` tet-rings of the given tets.
   std::vector<int> interiorRegion(const std::vector<int>& seedTets, int rings) const {
@@ -96,10 +94,10 @@ struct CompatibleTetBuilder::Impl {
     for (int ring = 0; ring < rings && !frontier.empty(); ++ring) {
       std::vector<int> next;
       for (int v : frontier) {
-        for (int k = vertexTetStart[static_cast<size_t>(v)];
-             k < vertexTetStart[static_cast<size_t>(v) + 1]; ++k) {
+        for (int k = stars.start[static_cast<size_t>(v)];
+             k < stars.start[static_cast<size_t>(v) + 1]; ++k) {
           for (int a = 0; a < 4; ++a) {
-            const int w = rest.tets(vertexTets[static_cast<size_t>(k)], a);
+            const int w = rest.tets(stars.tets[static_cast<size_t>(k)], a);
             if (!inRegion[static_cast<size_t>(w)]) next.push_back(w);
             inRegion[static_cast<size_t>(w)] = 1;
           }
@@ -151,9 +149,9 @@ struct CompatibleTetBuilder::Impl {
     parallelFor(interiorCount, [&](Eigen::Index i) {
       const int v = surfaceCount + static_cast<int>(i);
       Eigen::Vector3d sum = Eigen::Vector3d::Zero();
-      for (int k = vertexTetStart[static_cast<size_t>(v)];
-           k < vertexTetStart[static_cast<size_t>(v) + 1]; ++k) {
-        const int t = vertexTets[static_cast<size_t>(k)];
+      for (int k = stars.start[static_cast<size_t>(v)]; k < stars.start[static_cast<size_t>(v) + 1];
+           ++k) {
+        const int t = stars.tets[static_cast<size_t>(k)];
         const TetElement& element = elements[static_cast<size_t>(t)];
         int a = 0;
         while (rest.tets(t, a) != v) ++a;
@@ -202,6 +200,7 @@ struct CompatibleTetBuilder::Impl {
   // factorisation, 9 right-hand sides), averaged over each tet's corners and
   // projected back to SO(3).
   RotationField propagatedRotations(const Vertices& example) const {
+    const Triangles surfaceTriangles = boundarySurface(rest).triangles;
     Eigen::MatrixXd boundary = Eigen::MatrixXd::Zero(surfaceCount, 9);
     for (Eigen::Index f = 0; f < surfaceTriangles.rows(); ++f) {
       auto frame = [&](const Vertices& positions) {
@@ -308,57 +307,13 @@ CompatibleTetBuilder::CompatibleTetBuilder(const TetMesh& rest, int surfaceVerte
   m.elements = buildTetElements(rest);
   for (const TetElement& element : m.elements) m.totalVolume += element.volume;
   m.diagonal = boundingBoxDiagonal(rest.vertices);
-  m.surfaceTriangles = boundarySurface(rest).triangles;
-  if (m.surfaceTriangles.size() > 0 && m.surfaceTriangles.maxCoeff() >= surfaceVertexCount) {
-    throw InputError(
-        "CompatibleTetBuilder: vertex " + std::to_string(m.surfaceTriangles.maxCoeff()) +
-        " lies on the boundary but is not among the first " + std::to_string(surfaceVertexCount) +
-        " (surface) vertices; reorder with reorderBoundaryFirst");
-  }
-  m.vertexTetStart.assign(static_cast<size_t>(vertexCount) + 1, 0);
-  for (Eigen::Index t = 0; t < rest.tets.rows(); ++t) {
-    for (int a = 0; a < 4; ++a) ++m.vertexTetStart[static_cast<size_t>(rest.tets(t, a)) + 1];
-  }
-  for (size_t v = 0; v < static_cast<size_t>(vertexCount); ++v) {
-    m.vertexTetStart[v + 1] += m.vertexTetStart[v];
-  }
-  m.vertexTets.resize(static_cast<size_t>(m.vertexTetStart.back()));
-  {
-    std::vector<int> fill(m.vertexTetStart.begin(), m.vertexTetStart.end() - 1);
-    for (Eigen::Index t = 0; t < rest.tets.rows(); ++t) {
-      for (int a = 0; a < 4; ++a) {
-        m.vertexTets[static_cast<size_t>(fill[static_cast<size_t>(rest.tets(t, a))]++)] =
-            static_cast<int>(t);
-      }
-    }
-  }
-  // P1 stiffness K = Σ_t vol_t G_t^T G_t, split into interior and coupling.
-  std::vector<Eigen::Triplet<double>> interior;
-  std::vector<Eigen::Triplet<double>> coupling;
-  interior.reserve(16 * m.elements.size());
-  for (Eigen::Index t = 0; t < rest.tets.rows(); ++t) {
-    const TetElement& element = m.elements[static_cast<size_t>(t)];
-    const Eigen::Matrix4d local =
-        element.volume * element.gradients.transpose() * element.gradients;
-    for (int a = 0; a < 4; ++a) {
-      const int row = rest.tets(t, a) - surfaceVertexCount;
-      if (row < 0) continue;
-      for (int b = 0; b < 4; ++b) {
-        const int column = rest.tets(t, b);
-        if (column >= surfaceVertexCount) {
-          interior.emplace_back(row, column - surfaceVertexCount, local(a, b));
-        } else {
-          coupling.emplace_back(row, column, local(a, b));
-        }
-      }
-    }
-  }
-  m.interiorBlock.resize(m.interiorCount, m.interiorCount);
-  m.interiorBlock.setFromTriplets(interior.begin(), interior.end());
-  m.couplingBlock.resize(m.interiorCount, m.surfaceCount);
-  m.couplingBlock.setFromTriplets(coupling.begin(), coupling.end());
+  m.stars = vertexStars(rest.tets, vertexCount);
+  requireInteriorVerticesInside(rest.tets, m.stars, surfaceVertexCount);
+  StiffnessBlocks blocks =
+      assembleStiffnessBlocks(rest.tets, m.elements, m.stars, surfaceVertexCount);
+  m.couplingBlock = std::move(blocks.coupling);
   if (m.interiorCount > 0) {
-    m.solver.compute(m.interiorBlock);
+    m.solver.compute(blocks.interiorLower);
     if (m.solver.info() != Eigen::Success) {
       throw NumericalError(
           "CompatibleTetBuilder: Cholesky factorisation of the interior stiffness block failed "

@@ -286,10 +286,69 @@ TEST(CompatibleTets, InvertedHarmonicExtensionStillRunsArap) {
   expectDistortionReported(c, converged);
 }
 
+// The harmonic extension solves Σ_t vol_t G_tᵀ G_t x = 0 on the interior
+// rows, with K assembled here independently (dense, gradients of the
+// barycentric coordinates from the inverse edge matrix) and a non-affine
+// boundary (a twist plus a random jitter of the surface). Residual bound:
+// round-off of a Cholesky solve, |K| |x| eps cond(K) with cond ~ 1e3 here.
+constexpr double kLaplaceRelativeResidual = 1e-10;
+
+TEST(CompatibleTets, HarmonicExtensionSolvesTheDiscreteLaplaceEquation) {
+  const unsigned seed = testSeed();
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> jitter(-0.02, 0.02);
+  const Case c = twistedBar(1.0, 2.0, 4, 0.7 * kPi);
+  Vertices surface = surfaceOf(c);
+  for (Eigen::Index i = 0; i < surface.size(); ++i) surface.data()[i] += jitter(rng);
+  const CompatibleTetBuilder builder(c.rest.mesh, c.rest.boundaryVertexCount);
+  const Vertices x = builder.harmonicExtension(surface);
+  ASSERT_EQ(x.topRows(surface.rows()), surface);
+
+  const Vertices& rest = c.rest.mesh.vertices;
+  const Tets& tets = c.rest.mesh.tets;
+  Eigen::MatrixXd k = Eigen::MatrixXd::Zero(rest.rows(), rest.rows());
+  for (Eigen::Index t = 0; t < tets.rows(); ++t) {
+    const Eigen::Matrix3d edges = tetEdgeMatrix(rest, tets.row(t));
+    Eigen::Matrix<double, 3, 4> gradients;  // ∇λ_a as columns, λ_0 = 1 − Σ λ_1..3
+    gradients.rightCols<3>() = edges.inverse().transpose();
+    gradients.col(0) = -gradients.rightCols<3>().rowwise().sum();
+    const Eigen::Matrix4d local = edges.determinant() / 6.0 * gradients.transpose() * gradients;
+    for (int a = 0; a < 4; ++a) {
+      for (int b = 0; b < 4; ++b) k(tets(t, a), tets(t, b)) += local(a, b);
+    }
+  }
+  const Eigen::MatrixXd residual = (k * x).bottomRows(rest.rows() - surface.rows());
+  EXPECT_LT(residual.cwiseAbs().maxCoeff(),
+            kLaplaceRelativeResidual * k.cwiseAbs().maxCoeff() * x.cwiseAbs().maxCoeff());
+}
+
+TEST(CompatibleTets, RejectsAFaceSharedByThreeTets) {
+  const BoundaryFirstMesh rest = reorderBoundaryFirst(boxTetMesh(3, 3, 3, Eigen::Vector3d::Ones()));
+  TetMesh duplicated = rest.mesh;
+  duplicated.tets.conservativeResize(duplicated.tets.rows() + 1, 4);
+  duplicated.tets.bottomRows(1) = duplicated.tets.row(5);
+  try {
+    const CompatibleTetBuilder builder(duplicated, rest.boundaryVertexCount);
+    ADD_FAILURE() << "a face shared by 3 tets was accepted";
+  } catch (const InputError& error) {
+    EXPECT_NE(std::string(error.what()).find("more than 2 tets"), std::string::npos)
+        << error.what();
+  }
+}
+
 TEST(CompatibleTets, RejectsBadInput) {
   const BoundaryFirstMesh rest = reorderBoundaryFirst(boxTetMesh(3, 3, 3, Eigen::Vector3d::Ones()));
   // A surface count that leaves a boundary vertex among the "interior" ones.
-  EXPECT_THROW(CompatibleTetBuilder(rest.mesh, rest.boundaryVertexCount - 1), InputError);
+  try {
+    const CompatibleTetBuilder builder(rest.mesh, rest.boundaryVertexCount - 1);
+    ADD_FAILURE() << "a boundary vertex was accepted as interior";
+  } catch (const InputError& error) {
+    // The vertex named is the one moved out of the surface range.
+    EXPECT_NE(std::string(error.what())
+                  .find("vertex " + std::to_string(rest.boundaryVertexCount - 1) + " lies on"),
+              std::string::npos)
+        << error.what();
+  }
   EXPECT_THROW(CompatibleTetBuilder(rest.mesh, 0), InputError);
   TetMesh flipped = rest.mesh;
   std::swap(flipped.tets(7, 0), flipped.tets(7, 1));
