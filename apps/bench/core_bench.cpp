@@ -11,6 +11,7 @@
 #include <random>
 #include <vector>
 
+#include "tetblend/core/batch_kernels.h"
 #include "tetblend/core/kaji_ochiai.h"
 #include "tetblend/core/so3.h"
 #include "tetblend/core/sym3.h"
@@ -115,17 +116,55 @@ void BM_psi_eigen(benchmark::State& s) {
   });
 }
 
+// Batched kernels (batch_kernels.h) over the same pools, kBatchChunk
+// consecutive elements per call; items = elements.
+constexpr std::size_t kBatchChunk = 1024;
+
+template <typename Input, typename Output, typename Batch>
+void runBatched(benchmark::State& state, const std::vector<Input>& inputs, Batch batch) {
+  std::vector<Output> out(kBatchChunk);
+  std::size_t start = 0;
+  for (auto _ : state) {
+    batch(inputs.data() + start, out.data(), kBatchChunk);
+    benchmark::ClobberMemory();
+    start += kBatchChunk;
+    if (start + kBatchChunk > inputs.size()) start = 0;
+  }
+  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(kBatchChunk));
+}
+
+void BM_so3_log_batched(benchmark::State& s) {
+  runBatched<Eigen::Matrix3d, Eigen::Vector3d>(s, corePool().rotations, so3LogBatch);
+}
+void BM_sym_exp_batched(benchmark::State& s) {
+  runBatched<Eigen::Matrix3d, Eigen::Matrix3d>(s, corePool().symmetric, symExpBatch);
+}
+void BM_sym_log_batched(benchmark::State& s) {
+  runBatched<Eigen::Matrix3d, Eigen::Matrix3d>(s, corePool().spd, symLogBatch);
+}
+void BM_phi_batched(benchmark::State& s) {
+  runBatched<AffineParams, Eigen::Matrix4d>(s, corePool().params, phiBatch);
+}
+void BM_psi_batched(benchmark::State& s) {
+  runBatched<Eigen::Matrix4d, AffineParams>(s, corePool().affine, psiBatch);
+}
+
 BENCHMARK(BM_so3_exp);
 BENCHMARK(BM_so3_exp_eigen);
 BENCHMARK(BM_so3_log);
+BENCHMARK(BM_so3_log_batched);
 BENCHMARK(BM_so3_log_eigen);
 BENCHMARK(BM_sym_exp);
+BENCHMARK(BM_sym_exp_batched);
 BENCHMARK(BM_sym_exp_eigen);
 BENCHMARK(BM_sym_log);
+BENCHMARK(BM_sym_log_batched);
 BENCHMARK(BM_sym_log_eigen);
 BENCHMARK(BM_phi);
+BENCHMARK(BM_phi_batched);
 BENCHMARK(BM_phi_eigen);
 BENCHMARK(BM_psi);
+BENCHMARK(BM_psi_batched);
 BENCHMARK(BM_psi_eigen);
 
 }  // namespace

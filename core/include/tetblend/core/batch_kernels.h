@@ -1,0 +1,45 @@
+#pragma once
+// Batched versions of the per-element kernels for whole meshes: so3Log,
+// symExp, symLog, phi and psi over arrays. Each element's result equals the
+// scalar kernel's to a few ulps times the kernel's conditioning (the lanes use
+// the same formulas, thresholds and branches, with lane_math.h's polynomials
+// for exp/log/atan2/sin/cos). Internally the elements are transposed in
+// blocks into structure-of-arrays form and processed by a loop that GCC
+// vectorises; the best of AVX-512, AVX2+FMA or baseline code is chosen at run
+// time (function multi-versioning), so the library stays portable. Elements
+// the lanes do not cover (arguments outside the lane_math ranges, the scalar
+// kernels' fallback branches, errors) are recomputed by the scalar kernel, so
+// the batched call throws exactly what the scalar loop would throw, for the
+// first such element.
+//
+// Input and output arrays hold n elements each and must not overlap.
+
+#include <cstddef>
+
+#include <Eigen/Core>
+
+#include "tetblend/core/kaji_ochiai.h"
+
+namespace tetblend {
+
+/// out[i] = so3Log(rotations[i]) (principal log, Kaji–Ochiai eq. (7)),
+/// radians.
+void so3LogBatch(const Eigen::Matrix3d* rotations, Eigen::Vector3d* out, std::size_t n);
+
+/// out[i] = symExp(y[i]) (Kaji–Ochiai eq. (4)); y[i] symmetric, upper
+/// triangle read.
+void symExpBatch(const Eigen::Matrix3d* y, Eigen::Matrix3d* out, std::size_t n);
+
+/// out[i] = symLog(s[i]) (Kaji–Ochiai eq. (6)); s[i] symmetric positive
+/// definite, upper triangle read. Throws DomainError like symLog.
+void symLogBatch(const Eigen::Matrix3d* s, Eigen::Matrix3d* out, std::size_t n);
+
+/// out[i] = phi(params[i]) (Kaji–Ochiai eq. (2)), 4x4 homogeneous.
+void phiBatch(const AffineParams* params, Eigen::Matrix4d* out, std::size_t n);
+
+/// out[i] = psi(a[i]) (Kaji–Ochiai eq. (3), principal rotation log); a[i] 4x4
+/// homogeneous, bottom row not read. Throws DomainError like psi if some
+/// det a[i] <= 0.
+void psiBatch(const Eigen::Matrix4d* a, AffineParams* out, std::size_t n);
+
+}  // namespace tetblend

@@ -1,0 +1,199 @@
+// The batched kernels (batch_kernels.h) against their scalar versions, which
+// the other core tests check against Eigen's MatrixFunctions: fixed hard
+// cases on both sides of every branch threshold the lanes replicate, the
+// cases the lanes hand back to the scalar kernel, errors, and seeded random
+// samples in counts that leave a partial last block.
+
+#include "tetblend/core/batch_kernels.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+#include <vector>
+
+#include "test_seed.h"
+#include "tetblend/core/error.h"
+#include "tetblend/core/polar.h"
+#include "tetblend/core/so3.h"
+#include "tetblend/core/sym3.h"
+
+namespace tetblend {
+namespace {
+
+// Batched and scalar kernels evaluate the same formulas; they differ by the
+// elementary functions (lane_math, within 3 ulp of libm) and FMA contraction,
+// i.e. a few ulps per operation, amplified by the kernel's conditioning: up to
+// cond(S) <= 1e2 for the closed-form log (sym3.h) and the divided differences
+// near the series switches. Relative to 1 + |scalar result|_F.
+constexpr double kBatchVsScalarTol = 1e-13;
+// Random samples per kernel: 15 full blocks of 64 and a partial one.
+constexpr int kRandomCount = 1000;
+
+unsigned seed(const char* name) { return test_seed::seedFor(name, 7031u); }
+
+Eigen::Matrix3d randomRotation(std::mt19937& rng, double maxAngle) {
+  std::normal_distribution<double> n;
+  const Eigen::Vector3d axis = Eigen::Vector3d(n(rng), n(rng), n(rng)).normalized();
+  return so3Exp(test_seed::uniform(rng, 0.0, maxAngle) * axis);
+}
+
+Eigen::Matrix3d randomSymmetric(std::mt19937& rng, double range) {
+  Eigen::Matrix3d y;
+  for (int r = 0; r < 3; ++r)
+    for (int c = r; c < 3; ++c) y(r, c) = y(c, r) = test_seed::uniform(rng, -range, range);
+  return y;
+}
+
+/// V diag(values) V^T with a random rotation V.
+Eigen::Matrix3d withEigenvalues(std::mt19937& rng, const Eigen::Vector3d& values) {
+  const Eigen::Matrix3d v = randomRotation(rng, 3.0);
+  return v * values.asDiagonal() * v.transpose();
+}
+
+template <typename A, typename B>
+double relativeGap(const A& batched, const B& scalar) {
+  return (batched - scalar).norm() / (1.0 + scalar.norm());
+}
+
+TEST(BatchKernels, So3LogMatchesScalar) {
+  std::mt19937 rng(seed("So3LogMatchesScalar"));
+  const Eigen::Vector3d axis = Eigen::Vector3d(1.0, -2.0, 0.5).normalized();
+  const double small = so3_detail::kSmallAngle;
+  std::vector<Eigen::Matrix3d> in;
+  // Identity, tiny angles, both sides of kSmallAngle and of the axis switch at
+  // theta = pi/2 (cos = 0), pi - 1e-9, and exactly pi about coordinate axes.
+  for (double theta : {0.0, 1e-12, 0.5 * small, 2.0 * small, 1.0, 0.5 * M_PI - 1e-9,
+                       0.5 * M_PI + 1e-9, 3.0, M_PI - 1e-9, M_PI}) {
+    in.push_back(so3Exp(theta * axis));
+  }
+  in.push_back(Eigen::Vector3d(1.0, -1.0, -1.0).asDiagonal());
+  in.push_back(Eigen::Vector3d(-1.0, 1.0, -1.0).asDiagonal());
+  in.push_back(Eigen::Vector3d(-1.0, -1.0, 1.0).asDiagonal());
+  for (int i = 0; i < kRandomCount; ++i) in.push_back(randomRotation(rng, M_PI));
+  std::vector<Eigen::Vector3d> out(in.size());
+  so3LogBatch(in.data(), out.data(), in.size());
+  for (std::size_t i = 0; i < in.size(); ++i) {
+    EXPECT_LE(relativeGap(out[i], so3Log(in[i])), kBatchVsScalarTol) << "element " << i;
+  }
+}
+
+TEST(BatchKernels, SymExpMatchesScalar) {
+  std::mt19937 rng(seed("SymExpMatchesScalar"));
+  const double spread = sym3_detail::kExpSeriesSpread;
+  std::vector<Eigen::Matrix3d> in = {Eigen::Matrix3d::Zero(), 2.5 * Eigen::Matrix3d::Identity()};
+  // Eigenvalue spread on both sides of the series switch, a double
+  // eigenvalue, and eigenvalues beyond the lanes' exp range (scalar path).
+  for (double h : {0.5 * spread, 0.99 * spread, 1.01 * spread, 2.0 * spread, 1e-10}) {
+    in.push_back(withEigenvalues(rng, Eigen::Vector3d(0.3 + h, 0.3 + 0.4 * h, 0.3)));
+  }
+  in.push_back(withEigenvalues(rng, Eigen::Vector3d(1.0, 1.0, -2.0)));
+  in.push_back(withEigenvalues(rng, Eigen::Vector3d(705.0, 1.0, -2.0)));
+  in.push_back(withEigenvalues(rng, Eigen::Vector3d(1.0, 0.0, -710.0)));
+  in.push_back(withEigenvalues(rng, Eigen::Vector3d(400.0, 0.0, -400.0)));
+  for (int i = 0; i < kRandomCount; ++i) in.push_back(randomSymmetric(rng, i % 2 ? 1.0 : 20.0));
+  std::vector<Eigen::Matrix3d> out(in.size());
+  symExpBatch(in.data(), out.data(), in.size());
+  for (std::size_t i = 0; i < in.size(); ++i) {
+    EXPECT_LE(relativeGap(out[i], symExp(in[i])), kBatchVsScalarTol) << "element " << i;
+  }
+}
+
+TEST(BatchKernels, SymLogMatchesScalarAndThrowsLikeIt) {
+  std::mt19937 rng(seed("SymLogMatchesScalarAndThrowsLikeIt"));
+  const double spread = sym3_detail::kLogSeriesSpread;
+  const double maxCond = sym3_detail::kLogClosedFormMaxCond;
+  std::vector<Eigen::Matrix3d> in = {Eigen::Matrix3d::Identity(),
+                                     3.0 * Eigen::Matrix3d::Identity()};
+  // Relative spread on both sides of the series switch; cond on both sides of
+  // the closed-form limit (above: the scalar eigen-decomposition path).
+  for (double h : {0.5 * spread, 0.99 * spread, 1.01 * spread, 2.0 * spread, 1e-10}) {
+    in.push_back(
+        withEigenvalues(rng, Eigen::Vector3d(2.0 * (1.0 + h), 2.0 * (1.0 + 0.3 * h), 2.0)));
+  }
+  in.push_back(withEigenvalues(rng, Eigen::Vector3d(0.99 * maxCond, 1.0, 1.0)));
+  in.push_back(withEigenvalues(rng, Eigen::Vector3d(1.01 * maxCond, 1.0, 1.0)));
+  in.push_back(withEigenvalues(rng, Eigen::Vector3d(1e-3, 1e-3, 1e-5)));
+  for (int i = 0; i < kRandomCount; ++i) in.push_back(symExp(randomSymmetric(rng, 1.0)));
+  std::vector<Eigen::Matrix3d> out(in.size());
+  symLogBatch(in.data(), out.data(), in.size());
+  for (std::size_t i = 0; i < in.size(); ++i) {
+    EXPECT_LE(relativeGap(out[i], symLog(in[i])), kBatchVsScalarTol) << "element " << i;
+  }
+  in[in.size() / 2] = Eigen::Vector3d(1.0, 1.0, -1.0).asDiagonal();
+  EXPECT_THROW(symLogBatch(in.data(), out.data(), in.size()), DomainError);
+}
+
+TEST(BatchKernels, PhiMatchesScalar) {
+  std::mt19937 rng(seed("PhiMatchesScalar"));
+  const Eigen::Vector3d axis = Eigen::Vector3d(0.3, 0.2, -1.0).normalized();
+  const double small = so3_detail::kSmallAngle;
+  std::vector<AffineParams> in;
+  // Rotation angles on both sides of kSmallAngle, through pi and past 2 pi
+  // (20-30 rad), and beyond the lanes' sin/cos range (scalar path).
+  for (double theta : {0.0, 0.5 * small, 2.0 * small, M_PI, 2.0 * M_PI, 20.0, 30.0, 3e5}) {
+    in.push_back({Eigen::Vector3d(1.0, 2.0, 3.0), theta * axis, randomSymmetric(rng, 1.0)});
+  }
+  in.push_back(
+      {Eigen::Vector3d::Zero(), axis, withEigenvalues(rng, Eigen::Vector3d(1.0, 1.0, 0.2))});
+  for (int i = 0; i < kRandomCount; ++i) {
+    const Eigen::Vector3d t(test_seed::uniform(rng, -1, 1), test_seed::uniform(rng, -1, 1),
+                            test_seed::uniform(rng, -1, 1));
+    in.push_back({t, so3Log(randomRotation(rng, M_PI)), randomSymmetric(rng, 1.0)});
+  }
+  std::vector<Eigen::Matrix4d> out(in.size());
+  phiBatch(in.data(), out.data(), in.size());
+  for (std::size_t i = 0; i < in.size(); ++i) {
+    EXPECT_LE(relativeGap(out[i], phi(in[i])), kBatchVsScalarTol) << "element " << i;
+  }
+}
+
+void expectParamsClose(const AffineParams& got, const AffineParams& want, std::size_t i) {
+  EXPECT_EQ(got.translation, want.translation) << "element " << i;
+  EXPECT_LE(relativeGap(got.rotationLog, want.rotationLog), kBatchVsScalarTol) << "element " << i;
+  EXPECT_LE(relativeGap(got.stretchLog, want.stretchLog), kBatchVsScalarTol) << "element " << i;
+}
+
+TEST(BatchKernels, PsiMatchesScalarAndThrowsLikeIt) {
+  std::mt19937 rng(seed("PsiMatchesScalarAndThrowsLikeIt"));
+  const double maxCond = polar_detail::kClosedFormMaxCond;
+  const auto affine = [](const Eigen::Matrix3d& linear) {
+    Eigen::Matrix4d a = Eigen::Matrix4d::Identity();
+    a.topLeftCorner<3, 3>() = linear;
+    a.topRightCorner<3, 1>() << 0.5, -1.0, 2.0;
+    return a;
+  };
+  std::vector<Eigen::Matrix4d> in = {Eigen::Matrix4d::Identity(),
+                                     affine(2.0 * randomRotation(rng, M_PI))};
+  // Coincident and near-coincident singular values, a rotation by pi, cond(A)
+  // on both sides of the closed-form limit (above: Newton in the scalar psi).
+  const Eigen::Matrix3d r = randomRotation(rng, M_PI);
+  for (const Eigen::Vector3d& sigma :
+       {Eigen::Vector3d(2.0, 2.0, 1.0), Eigen::Vector3d(1.0, 1.0 + 1e-9, 1.0 - 1e-9),
+        Eigen::Vector3d(0.9 * maxCond, 1.0, 1.0), Eigen::Vector3d(1.1 * maxCond, 1.0, 1.0),
+        Eigen::Vector3d(1e8, 1.0, 1.0)}) {
+    in.push_back(affine(r * withEigenvalues(rng, sigma)));
+  }
+  in.push_back(affine(Eigen::Vector3d(1.0, -1.0, -1.0).asDiagonal()));
+  in.push_back(affine(so3Exp((M_PI - 1e-9) * Eigen::Vector3d(0.6, 0.8, 0.0)) *
+                      withEigenvalues(rng, Eigen::Vector3d(3.0, 1.0, 0.5))));
+  for (int i = 0; i < kRandomCount; ++i) {
+    in.push_back(affine(randomRotation(rng, M_PI) * symExp(randomSymmetric(rng, 1.0))));
+  }
+  std::vector<AffineParams> out(in.size());
+  psiBatch(in.data(), out.data(), in.size());
+  for (std::size_t i = 0; i < in.size(); ++i) expectParamsClose(out[i], psi(in[i]), i);
+  in[in.size() - 3] = affine(Eigen::Vector3d(1.0, 1.0, -1.0).asDiagonal());
+  EXPECT_THROW(psiBatch(in.data(), out.data(), in.size()), DomainError);
+}
+
+TEST(BatchKernels, EmptyAndSingleElementCalls) {
+  std::vector<Eigen::Matrix4d> in = {Eigen::Matrix4d::Identity()};
+  std::vector<AffineParams> out(1);
+  psiBatch(in.data(), out.data(), 0);
+  psiBatch(in.data(), out.data(), 1);
+  expectParamsClose(out[0], psi(in[0]), 0);
+}
+
+}  // namespace
+}  // namespace tetblend
