@@ -12,6 +12,7 @@
 #include <random>
 #include <vector>
 
+#include "core_test_support.h"
 #include "test_seed.h"
 #include "tetblend/core/error.h"
 #include "tetblend/core/polar.h"
@@ -27,6 +28,12 @@ namespace {
 // cond(S) <= 1e2 for the closed-form log (sym3.h) and the divided differences
 // near the series switches. Relative to 1 + |scalar result|_F.
 constexpr double kBatchVsScalarTol = 1e-13;
+// phi(psi(A)) = A through the batched pair, relative Frobenius error of the
+// linear part: the design's accuracy bands by cond(A), as for the scalar pair
+// (kaji_ochiai_test.cpp).
+constexpr double kRoundTripTolCond1e2 = 1e-13;
+constexpr double kRoundTripTolCond1e4 = 1e-11;
+constexpr double kRoundTripTolCond1e8 = 1e-7;
 // Random samples per kernel: 15 full blocks of 64 and a partial one.
 constexpr int kRandomCount = 1000;
 
@@ -185,6 +192,36 @@ TEST(BatchKernels, PsiMatchesScalarAndThrowsLikeIt) {
   for (std::size_t i = 0; i < in.size(); ++i) expectParamsClose(out[i], psi(in[i]), i);
   in[in.size() - 3] = affine(Eigen::Vector3d(1.0, 1.0, -1.0).asDiagonal());
   EXPECT_THROW(psiBatch(in.data(), out.data(), in.size()), DomainError);
+}
+
+TEST(BatchKernels, PhiPsiRoundTripByConditionBand) {
+  std::mt19937 rng(seed("PhiPsiRoundTripByConditionBand"));
+  std::vector<Eigen::Matrix4d> in;
+  std::vector<double> tol;
+  for (double cond : {1.0, 10.0, 1e2, 1e3, 1e4, 1e6, 1e8}) {
+    for (int i = 0; i < 200; ++i) {
+      const double scale = std::exp(test_seed::uniform(rng, -std::log(1e6), std::log(1e6)));
+      Eigen::Matrix4d a = Eigen::Matrix4d::Identity();
+      a.topLeftCorner<3, 3>() = core_test::randomMatrixWithCond(rng, cond, scale);
+      a.topRightCorner<3, 1>() = scale * Eigen::Vector3d::Random();
+      in.push_back(a);
+      tol.push_back(cond <= 1e2   ? kRoundTripTolCond1e2
+                    : cond <= 1e4 ? kRoundTripTolCond1e4
+                                  : kRoundTripTolCond1e8);
+    }
+  }
+  std::vector<AffineParams> params(in.size());
+  std::vector<Eigen::Matrix4d> back(in.size());
+  psiBatch(in.data(), params.data(), in.size());
+  phiBatch(params.data(), back.data(), in.size());
+  for (std::size_t i = 0; i < in.size(); ++i) {
+    ASSERT_TRUE(back[i].allFinite()) << "element " << i;
+    EXPECT_LE(core_test::relativeError(back[i].topLeftCorner<3, 3>(), in[i].topLeftCorner<3, 3>()),
+              tol[i])
+        << "element " << i;
+    EXPECT_TRUE((back[i].topRightCorner<3, 1>() == in[i].topRightCorner<3, 1>()))
+        << "element " << i;
+  }
 }
 
 TEST(BatchKernels, EmptyAndSingleElementCalls) {
