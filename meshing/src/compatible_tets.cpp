@@ -346,15 +346,15 @@ CompatibleTetResult CompatibleTetBuilder::place(const Vertices& exampleSurface) 
   const Impl& m = *impl_;
   CompatibleTetResult result;
   result.vertices = harmonicExtension(exampleSurface);
-  result.harmonicInvertedCount =
-      static_cast<int>(invertedTets(result.vertices, m.rest.tets).size());
-  const bool harmonicAccepted = m.options.stopWhenValid && result.harmonicInvertedCount == 0;
+  result.invertedTets = invertedTets(result.vertices, m.rest.tets);
+  result.harmonicInvertedCount = static_cast<int>(result.invertedTets.size());
+  const bool harmonicAccepted = m.options.stopWhenValid && result.invertedTets.empty();
   if (m.interiorCount > 0 && !harmonicAccepted) {
     m.arapSearch(exampleSurface, result);
     if (m.options.untangle) result.untangleRounds = m.untangleInverted(result.vertices);
+    result.invertedTets = invertedTets(result.vertices, m.rest.tets);
   }
   m.measure(result.vertices, result);
-  result.invertedTets = invertedTets(result.vertices, m.rest.tets);
   for (int t : result.invertedTets) {
     result.invertedVolumes.push_back(tetSignedVolume(result.vertices, m.rest.tets.row(t)));
   }
