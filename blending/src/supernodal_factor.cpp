@@ -113,33 +113,116 @@ void subtractDots(const double* block, int below, double* x, int c0, int c1, con
   }
 }
 
-// The diagonal block's triangle (packed by columns) on a supernode's rows,
-// x, y and z as separate arrays tx, ty, tz of `columns` entries.
-// Forward: L11 t = t by columns (axpy form).
-void triangleForward(const double* triangle, int columns, double* __restrict tx,
-                     double* __restrict ty, double* __restrict tz) {
-  for (int c = 0; c < columns; ++c) {
-    const double* __restrict column = triangle + triangleOffset(c, columns);
-    const double inverse = 1.0 / column[0];
-    const double a0 = tx[c] *= inverse, a1 = ty[c] *= inverse, a2 = tz[c] *= inverse;
-    for (int i = 1; i < columns - c; ++i) {
-      tx[c + i] -= column[i] * a0;
-      ty[c + i] -= column[i] * a1;
-      tz[c + i] -= column[i] * a2;
+// Column c of a packed triangle as an array indexed by row: column(c)[r] =
+// L(r, c) for r in [c, columns).
+inline const double* triangleColumn(const double* triangle, int c, int columns) {
+  return triangle + triangleOffset(c, columns) - c;
+}
+
+// t[r] -= sum_c L(r, c) t[c] for rows [r0, r1) and columns [c0, c1) of a packed
+// triangle (r0 >= c1), x, y and z as separate arrays, four columns at a time.
+void triangleUpdateRows(const double* triangle, int columns, int c0, int c1, int r0, int r1,
+                        double* __restrict tx, double* __restrict ty, double* __restrict tz) {
+  int c = c0;
+  for (; c + 4 <= c1; c += 4) {
+    const double* __restrict p0 = triangleColumn(triangle, c, columns);
+    const double* __restrict p1 = triangleColumn(triangle, c + 1, columns);
+    const double* __restrict p2 = triangleColumn(triangle, c + 2, columns);
+    const double* __restrict p3 = triangleColumn(triangle, c + 3, columns);
+    const double x0 = tx[c], x1 = tx[c + 1], x2 = tx[c + 2], x3 = tx[c + 3];
+    const double y0 = ty[c], y1 = ty[c + 1], y2 = ty[c + 2], y3 = ty[c + 3];
+    const double z0 = tz[c], z1 = tz[c + 1], z2 = tz[c + 2], z3 = tz[c + 3];
+    for (int r = r0; r < r1; ++r) {
+      tx[r] -= p0[r] * x0 + p1[r] * x1 + p2[r] * x2 + p3[r] * x3;
+      ty[r] -= p0[r] * y0 + p1[r] * y1 + p2[r] * y2 + p3[r] * y3;
+      tz[r] -= p0[r] * z0 + p1[r] * z1 + p2[r] * z2 + p3[r] * z3;
+    }
+  }
+  for (; c < c1; ++c) {
+    const double* __restrict p0 = triangleColumn(triangle, c, columns);
+    const double x0 = tx[c], y0 = ty[c], z0 = tz[c];
+    for (int r = r0; r < r1; ++r) {
+      tx[r] -= p0[r] * x0;
+      ty[r] -= p0[r] * y0;
+      tz[r] -= p0[r] * z0;
     }
   }
 }
 
-// Backward: L11^T t = t, last column first (dot form).
-void triangleBackward(const double* triangle, int columns, double* tx, double* ty, double* tz) {
-  for (int c = columns - 1; c >= 0; --c) {
-    const double* column = triangle + triangleOffset(c, columns);
+// t[c] -= sum_{r >= r0} L(r, c) t[r] for columns [c0, c1) of a packed triangle
+// (r0 >= c1).
+void triangleSubtractDots(const double* triangle, int columns, int c0, int c1, int r0, double* tx,
+                          double* ty, double* tz) {
+  for (int c = c0; c < c1; ++c) {
     double sum[3];
-    dot3(column + 1, tx + c + 1, ty + c + 1, tz + c + 1, columns - c - 1, sum);
-    const double inverse = 1.0 / column[0];
-    tx[c] = (tx[c] - sum[0]) * inverse;
-    ty[c] = (ty[c] - sum[1]) * inverse;
-    tz[c] = (tz[c] - sum[2]) * inverse;
+    dot3(triangleColumn(triangle, c, columns) + r0, tx + r0, ty + r0, tz + r0, columns - r0, sum);
+    tx[c] -= sum[0];
+    ty[c] -= sum[1];
+    tz[c] -= sum[2];
+  }
+}
+
+// Width of the column panels of a large triangle solved on two threads.
+constexpr int kTrianglePanel = 128;
+// Triangles with at least this many columns are solved by panels on two
+// threads when the caller allows it (the sequential top of the tree).
+constexpr int kParallelTriangleColumns = 512;
+
+// The diagonal block's triangle (packed by columns) on a supernode's rows,
+// x, y and z as separate arrays tx, ty, tz of `columns` entries.
+// Forward: L11 t = t by columns (axpy form). With `parallel`, a large
+// triangle goes by panels of kTrianglePanel columns: each panel's own
+// triangle in sequence, then its update of the rows below split between two
+// threads (rows are independent).
+void triangleForward(const double* triangle, int columns, double* __restrict tx,
+                     double* __restrict ty, double* __restrict tz, bool parallel) {
+  const int panel =
+      parallel && columns >= kParallelTriangleColumns ? kTrianglePanel : std::max(columns, 1);
+  for (int c0 = 0; c0 < columns; c0 += panel) {
+    const int c1 = std::min(c0 + panel, columns);
+    for (int c = c0; c < c1; ++c) {
+      const double* __restrict column = triangle + triangleOffset(c, columns);
+      const double inverse = 1.0 / column[0];
+      const double a0 = tx[c] *= inverse, a1 = ty[c] *= inverse, a2 = tz[c] *= inverse;
+      for (int i = 1; i < c1 - c; ++i) {
+        tx[c + i] -= column[i] * a0;
+        ty[c + i] -= column[i] * a1;
+        tz[c + i] -= column[i] * a2;
+      }
+    }
+    if (c1 == columns) break;
+    const int half = c1 + (columns - c1) / 2;
+    tbb::parallel_invoke(
+        [&] { triangleUpdateRows(triangle, columns, c0, c1, c1, half, tx, ty, tz); },
+        [&] { triangleUpdateRows(triangle, columns, c0, c1, half, columns, tx, ty, tz); });
+  }
+}
+
+// Backward: L11^T t = t, last column first (dot form); with `parallel`, by
+// panels from the last: the panel's dot products with the rows below it
+// split between two threads by columns, then its own triangle.
+void triangleBackward(const double* triangle, int columns, double* tx, double* ty, double* tz,
+                      bool parallel) {
+  const int panel =
+      parallel && columns >= kParallelTriangleColumns ? kTrianglePanel : std::max(columns, 1);
+  for (int c1 = columns; c1 > 0;) {
+    const int c0 = std::max(c1 - panel, 0);
+    if (c1 < columns) {
+      const int half = c0 + (c1 - c0) / 2;
+      tbb::parallel_invoke(
+          [&] { triangleSubtractDots(triangle, columns, c0, half, c1, tx, ty, tz); },
+          [&] { triangleSubtractDots(triangle, columns, half, c1, c1, tx, ty, tz); });
+    }
+    for (int c = c1 - 1; c >= c0; --c) {
+      const double* column = triangle + triangleOffset(c, columns);
+      double sum[3];
+      dot3(column + 1, tx + c + 1, ty + c + 1, tz + c + 1, c1 - c - 1, sum);
+      const double inverse = 1.0 / column[0];
+      tx[c] = (tx[c] - sum[0]) * inverse;
+      ty[c] = (ty[c] - sum[1]) * inverse;
+      tz[c] = (tz[c] - sum[2]) * inverse;
+    }
+    c1 = c0;
   }
 }
 
@@ -250,7 +333,7 @@ void SupernodalFactor::forward(int begin, int end, double* yv, UpdateMatrix& u, 
     const double* triangle = values_.data() + valueStart_[s];
     double* x = yv + 3 * static_cast<int64_t>(first);
     toColumns(x, columns, t.data(), tld);
-    triangleForward(triangle, columns, t.data(), t.data() + tld, t.data() + 2 * tld);
+    triangleForward(triangle, columns, t.data(), t.data() + tld, t.data() + 2 * tld, parallel);
     fromColumns(t.data(), tld, columns, x);
     if (below == 0) continue;
     std::fill(ux, ux + below, 0.0);
@@ -308,7 +391,7 @@ void SupernodalFactor::backward(int begin, int end, double* yv, UpdateMatrix& u,
       }
     }
     toColumns(x, columns, t.data(), tld);
-    triangleBackward(triangle, columns, t.data(), t.data() + tld, t.data() + 2 * tld);
+    triangleBackward(triangle, columns, t.data(), t.data() + tld, t.data() + 2 * tld, parallel);
     fromColumns(t.data(), tld, columns, x);
   }
 }
