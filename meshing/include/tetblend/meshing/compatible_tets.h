@@ -13,8 +13,8 @@
 //     extension without inverted tets is the result, and step 2 stops at the
 //     first candidate without inverted tets: on the benchmark's 2π twist,
 //     180° bend and 170° elbow (10k tets) ARAP lowers the ARAP energy by
-//     0.2%, 19% and 12% (0.1023→0.1021, 0.030→0.025, 0.140→0.123) at ~20×
-//     the cost;
+//     0.2%, 19% and 12% (0.1023→0.1021, 0.030→0.025, 0.140→0.123) and
+//     makes place() 40–60× slower;
 //  2. volumetric ARAP (Sorkine & Alexa 2007, per tet: min Σ_t vol_t
 //     ‖∇_t x − R_t‖², local polar rotation, global solve with the same
 //     matrix), warm-started from whichever has the lower ARAP energy: the
