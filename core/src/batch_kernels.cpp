@@ -135,19 +135,8 @@ void symLogBlock(const Eigen::Matrix3d* s, Eigen::Matrix3d* out, int n) {
   for (int l = 0; l < n; ++l) out[l] = ok[l] ? fullSym(res, l) : symLog(s[l]);
 }
 
-TETBLEND_BATCH_CLONES
-void phiBlock(const AffineParams* params, Eigen::Matrix4d* out, int n) {
-  Block3 w;
-  Block6 y;
-  Block9 res;
-  bool ok[kBlock];
-  for (int l = 0; l < n; ++l) {
-#pragma GCC unroll 9
-    for (int i = 0; i < 3; ++i) w[i][l] = params[l].rotationLog(i);
-    loadSym(params[l].stretchLog, y, l);
-  }
-  for (int l = n; l < kBlock; ++l) w[0][l] = w[1][l] = w[2][l] = 0.0;
-  padIdentity6(y, n);
+/// Lane loop of phi's linear block so3Exp(w) symExp(y) (Kaji–Ochiai eq. (2)).
+TETBLEND_LANE void rotationStretchLanes(const Block3& w, const Block6& y, Block9& res, bool* ok) {
   for (int l = 0; l < kBlock; ++l) {
     Mat rot;
     Sym st;
@@ -163,18 +152,67 @@ void phiBlock(const AffineParams* params, Eigen::Matrix4d* out, int n) {
       }
     }
   }
+}
+
+void padZero3(Block3& b, int from) {
+  for (int l = from; l < kBlock; ++l) b[0][l] = b[1][l] = b[2][l] = 0.0;
+}
+
+Eigen::Matrix3d matrixAt(const Block9& b, int l) {
+  Eigen::Matrix3d m;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) m(i, j) = b[3 * i + j][l];
+  return m;
+}
+
+TETBLEND_BATCH_CLONES
+void phiBlock(const AffineParams* params, Eigen::Matrix4d* out, int n) {
+  Block3 w;
+  Block6 y;
+  Block9 res;
+  bool ok[kBlock];
+  for (int l = 0; l < n; ++l) {
+    for (int i = 0; i < 3; ++i) w[i][l] = params[l].rotationLog(i);
+    loadSym(params[l].stretchLog, y, l);
+  }
+  padZero3(w, n);
+  padIdentity6(y, n);
+  rotationStretchLanes(w, y, res, ok);
   for (int l = 0; l < n; ++l) {
     if (!ok[l]) {
       out[l] = phi(params[l]);
       continue;
     }
     Eigen::Matrix4d& m = out[l];
-#pragma GCC unroll 9
-    for (int i = 0; i < 3; ++i)
-#pragma GCC unroll 9
-      for (int j = 0; j < 3; ++j) m(i, j) = res[3 * i + j][l];
+    m.topLeftCorner<3, 3>() = matrixAt(res, l);
     m.topRightCorner<3, 1>() = params[l].translation;
     m.row(3) << 0.0, 0.0, 0.0, 1.0;
+  }
+}
+
+TETBLEND_BATCH_CLONES
+void phiLinearBlock(const double* logs, Eigen::Matrix3d* out, int n) {
+  Block3 w;
+  Block6 y;
+  Block9 res;
+  bool ok[kBlock];
+  for (int l = 0; l < n; ++l) {
+    const double* p = logs + 9 * l;
+    for (int i = 0; i < 3; ++i) w[i][l] = p[i];
+    for (int k = 0; k < 6; ++k) y[k][l] = p[3 + k];
+  }
+  padZero3(w, n);
+  padIdentity6(y, n);
+  rotationStretchLanes(w, y, res, ok);
+  for (int l = 0; l < n; ++l) {
+    if (ok[l]) {
+      out[l] = matrixAt(res, l);
+    } else {
+      const double* p = logs + 9 * l;
+      Eigen::Matrix3d stretch;
+      stretch << p[3], p[4], p[5], p[4], p[6], p[7], p[5], p[7], p[8];
+      out[l] = so3Exp(Eigen::Vector3d(p[0], p[1], p[2])) * symExp(stretch);
+    }
   }
 }
 
@@ -207,6 +245,27 @@ void psiBlock(const Eigen::Matrix4d* a, AffineParams* out, int n) {
   }
 }
 
+TETBLEND_BATCH_CLONES
+void polarLogBlock(const Eigen::Matrix3d* a, PolarLogDecomposition* out, int n) {
+  Block9 in, rot;
+  Block6 logS;
+  bool ok[kBlock];
+  for (int l = 0; l < n; ++l) loadMatrix(a[l], in, l);
+  padIdentity9(in, n);
+  for (int l = 0; l < kBlock; ++l) {
+    Mat r;
+    Sym ls;
+    ok[l] = batch_detail::polarLogLane(matAt(in, l), r, ls);
+    storeSym(ls, logS, l);
+#pragma GCC unroll 9
+    for (int k = 0; k < 9; ++k) rot[k][l] = r.m[k];
+  }
+  for (int l = 0; l < n; ++l) {
+    out[l] =
+        ok[l] ? PolarLogDecomposition{matrixAt(rot, l), fullSym(logS, l)} : polarDecomposeLog(a[l]);
+  }
+}
+
 /// Runs `block` on consecutive blocks of kBlock elements.
 template <typename In, typename Out, typename Block>
 void forEachBlock(const In* in, Out* out, std::size_t n, Block block) {
@@ -235,6 +294,17 @@ void phiBatch(const AffineParams* params, Eigen::Matrix4d* out, std::size_t n) {
 
 void psiBatch(const Eigen::Matrix4d* a, AffineParams* out, std::size_t n) {
   forEachBlock(a, out, n, psiBlock);
+}
+
+void phiLinearBatch(const double* logs, Eigen::Matrix3d* out, std::size_t n) {
+  for (std::size_t start = 0; start < n; start += kBlock) {
+    phiLinearBlock(logs + 9 * start, out + start,
+                   static_cast<int>(std::min<std::size_t>(kBlock, n - start)));
+  }
+}
+
+void polarDecomposeLogBatch(const Eigen::Matrix3d* a, PolarLogDecomposition* out, std::size_t n) {
+  forEachBlock(a, out, n, polarLogBlock);
 }
 
 }  // namespace tetblend

@@ -131,8 +131,7 @@ TEST(BatchKernels, SymLogMatchesScalarAndThrowsLikeIt) {
   EXPECT_THROW(symLogBatch(in.data(), out.data(), in.size()), DomainError);
 }
 
-TEST(BatchKernels, PhiMatchesScalar) {
-  std::mt19937 rng(seed("PhiMatchesScalar"));
+std::vector<AffineParams> phiInputs(std::mt19937& rng) {
   const Eigen::Vector3d axis = Eigen::Vector3d(0.3, 0.2, -1.0).normalized();
   const double small = so3_detail::kSmallAngle;
   std::vector<AffineParams> in;
@@ -148,10 +147,35 @@ TEST(BatchKernels, PhiMatchesScalar) {
                             test_seed::uniform(rng, -1, 1));
     in.push_back({t, so3Log(randomRotation(rng, M_PI)), randomSymmetric(rng, 1.0)});
   }
+  return in;
+}
+
+TEST(BatchKernels, PhiMatchesScalar) {
+  std::mt19937 rng(seed("PhiMatchesScalar"));
+  const std::vector<AffineParams> in = phiInputs(rng);
   std::vector<Eigen::Matrix4d> out(in.size());
   phiBatch(in.data(), out.data(), in.size());
   for (std::size_t i = 0; i < in.size(); ++i) {
     EXPECT_LE(relativeGap(out[i], phi(in[i])), kBatchVsScalarTol) << "element " << i;
+  }
+}
+
+TEST(BatchKernels, PhiLinearMatchesScalar) {
+  std::mt19937 rng(seed("PhiLinearMatchesScalar"));
+  const std::vector<AffineParams> in = phiInputs(rng);
+  std::vector<double> logs;
+  for (const AffineParams& p : in) {
+    const Eigen::Matrix3d& y = p.stretchLog;
+    for (double v : {p.rotationLog(0), p.rotationLog(1), p.rotationLog(2), y(0, 0), y(0, 1),
+                     y(0, 2), y(1, 1), y(1, 2), y(2, 2)}) {
+      logs.push_back(v);
+    }
+  }
+  std::vector<Eigen::Matrix3d> out(in.size());
+  phiLinearBatch(logs.data(), out.data(), in.size());
+  for (std::size_t i = 0; i < in.size(); ++i) {
+    const Eigen::Matrix3d want = phi(in[i]).topLeftCorner<3, 3>();
+    EXPECT_LE(relativeGap(out[i], want), kBatchVsScalarTol) << "element " << i;
   }
 }
 
@@ -161,15 +185,16 @@ void expectParamsClose(const AffineParams& got, const AffineParams& want, std::s
   EXPECT_LE(relativeGap(got.stretchLog, want.stretchLog), kBatchVsScalarTol) << "element " << i;
 }
 
-TEST(BatchKernels, PsiMatchesScalarAndThrowsLikeIt) {
-  std::mt19937 rng(seed("PsiMatchesScalarAndThrowsLikeIt"));
+/// 4x4 homogeneous map with the given linear part and a fixed translation.
+Eigen::Matrix4d affine(const Eigen::Matrix3d& linear) {
+  Eigen::Matrix4d a = Eigen::Matrix4d::Identity();
+  a.topLeftCorner<3, 3>() = linear;
+  a.topRightCorner<3, 1>() << 0.5, -1.0, 2.0;
+  return a;
+}
+
+std::vector<Eigen::Matrix4d> psiInputs(std::mt19937& rng) {
   const double maxCond = polar_detail::kClosedFormMaxCond;
-  const auto affine = [](const Eigen::Matrix3d& linear) {
-    Eigen::Matrix4d a = Eigen::Matrix4d::Identity();
-    a.topLeftCorner<3, 3>() = linear;
-    a.topRightCorner<3, 1>() << 0.5, -1.0, 2.0;
-    return a;
-  };
   std::vector<Eigen::Matrix4d> in = {Eigen::Matrix4d::Identity(),
                                      affine(2.0 * randomRotation(rng, M_PI))};
   // Coincident and near-coincident singular values, a rotation by pi, cond(A)
@@ -187,11 +212,33 @@ TEST(BatchKernels, PsiMatchesScalarAndThrowsLikeIt) {
   for (int i = 0; i < kRandomCount; ++i) {
     in.push_back(affine(randomRotation(rng, M_PI) * symExp(randomSymmetric(rng, 1.0))));
   }
+  return in;
+}
+
+TEST(BatchKernels, PsiMatchesScalarAndThrowsLikeIt) {
+  std::mt19937 rng(seed("PsiMatchesScalarAndThrowsLikeIt"));
+  std::vector<Eigen::Matrix4d> in = psiInputs(rng);
   std::vector<AffineParams> out(in.size());
   psiBatch(in.data(), out.data(), in.size());
   for (std::size_t i = 0; i < in.size(); ++i) expectParamsClose(out[i], psi(in[i]), i);
   in[in.size() - 3] = affine(Eigen::Vector3d(1.0, 1.0, -1.0).asDiagonal());
   EXPECT_THROW(psiBatch(in.data(), out.data(), in.size()), DomainError);
+}
+
+TEST(BatchKernels, PolarDecomposeLogMatchesScalarAndThrowsLikeIt) {
+  std::mt19937 rng(seed("PolarDecomposeLogMatchesScalarAndThrowsLikeIt"));
+  std::vector<Eigen::Matrix3d> in;
+  for (const Eigen::Matrix4d& a : psiInputs(rng)) in.push_back(a.topLeftCorner<3, 3>());
+  std::vector<PolarLogDecomposition> out(in.size());
+  polarDecomposeLogBatch(in.data(), out.data(), in.size());
+  for (std::size_t i = 0; i < in.size(); ++i) {
+    const PolarLogDecomposition want = polarDecomposeLog(in[i]);
+    EXPECT_LE(relativeGap(out[i].rotation, want.rotation), kBatchVsScalarTol) << "element " << i;
+    EXPECT_LE(relativeGap(out[i].stretchLog, want.stretchLog), kBatchVsScalarTol)
+        << "element " << i;
+  }
+  in[in.size() - 3] = Eigen::Vector3d(1.0, 1.0, -1.0).asDiagonal();
+  EXPECT_THROW(polarDecomposeLogBatch(in.data(), out.data(), in.size()), DomainError);
 }
 
 TEST(BatchKernels, PhiPsiRoundTripByConditionBand) {

@@ -19,6 +19,7 @@
 #include <Eigen/Core>
 
 #include "tetblend/core/kaji_ochiai.h"
+#include "tetblend/core/polar.h"
 
 namespace tetblend {
 
@@ -41,5 +42,16 @@ void phiBatch(const AffineParams* params, Eigen::Matrix4d* out, std::size_t n);
 /// homogeneous, bottom row not read. Throws DomainError like psi if some
 /// det a[i] <= 0.
 void psiBatch(const Eigen::Matrix4d* a, AffineParams* out, std::size_t n);
+
+/// Packed form of phi's linear block for per-tet parameter arrays: out[i] =
+/// so3Exp(w_i) * symExp(Y_i) (Kaji–Ochiai eq. (2) without translation), where
+/// logs[9 i .. 9 i + 8] holds w_i (3, radians) then the upper triangle of the
+/// symmetric Y_i as (xx, xy, xz, yy, yz, zz).
+void phiLinearBatch(const double* logs, Eigen::Matrix3d* out, std::size_t n);
+
+/// out[i] = polarDecomposeLog(a[i]) (3x3, det > 0): the rotation factor and
+/// log S (Kaji–Ochiai eq. (3)) without the rotation log. Throws DomainError
+/// like polarDecomposeLog if some det a[i] <= 0.
+void polarDecomposeLogBatch(const Eigen::Matrix3d* a, PolarLogDecomposition* out, std::size_t n);
 
 }  // namespace tetblend
