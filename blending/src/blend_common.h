@@ -29,15 +29,17 @@ void forEachTet(int count, const Body& body) {
                     });
 }
 
-/// Runs body(begin, end) on consecutive chunks of at most kTetGrain tets
-/// covering [0, count), in parallel; each chunk writes only its own tets'
-/// outputs (so a body can gather a chunk's parameters into one contiguous
-/// array and hand it to a batched kernel).
+/// Runs body(begin, end) in parallel on the fixed chunks [c kTetGrain,
+/// min((c + 1) kTetGrain, count)) covering [0, count); each chunk writes only
+/// its own tets' outputs. The chunk boundaries do not depend on the schedule,
+/// so a body may hand a chunk's contiguous parameters to a batched kernel
+/// (whose rounding may depend on an element's place in the batch) and still
+/// give the same result on every run.
 template <typename Body>
 void forEachTetChunk(int count, const Body& body) {
-  tbb::parallel_for(
-      tbb::blocked_range<int>(0, count, kTetGrain),
-      [&](const tbb::blocked_range<int>& range) { body(range.begin(), range.end()); });
+  const int chunks = (count + kTetGrain - 1) / kTetGrain;
+  tbb::parallel_for(0, chunks,
+                    [&](int c) { body(c * kTetGrain, std::min(count, (c + 1) * kTetGrain)); });
 }
 
 /// Number of tets and examples of a BlendInput, after checking it is complete.

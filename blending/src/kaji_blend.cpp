@@ -5,6 +5,7 @@
 
 #include "blend_common.h"
 #include "tetblend/blending/rotation_consistency.h"
+#include "tetblend/core/batch_kernels.h"
 #include "tetblend/core/kaji_ochiai.h"
 #include "tetblend/core/so3.h"
 #include "tetblend/core/sym3.h"
@@ -78,8 +79,10 @@ class KajiBlender final : public TetMapBlender {
   // phi (eq. (2)) of the blended parameters, with the rotation lift of
   // rotation_consistency.h (its correction factor only in the tets with a
   // non-zero correction; elsewhere this is exactly phi(sum_k w_k psi(F_kj))).
-  // Each chunk of tets first sums its parameters into a contiguous array of
-  // blended logarithms, then maps them through the exponentials.
+  // Each fixed chunk of tets sums its parameters into one contiguous array of
+  // blended logarithms (w, then Y's upper triangle: phiLinearBatch's layout)
+  // and maps it through core's batched exponentials; the few corrected tets
+  // are then redone with their correction factor.
   void blendTargets(const std::vector<double>& weights,
                     std::vector<Eigen::Matrix3d>& targets) const override {
     checkWeights(weights, examples_);
@@ -94,27 +97,23 @@ class KajiBlender final : public TetMapBlender {
           for (int i = 0; i < kParamsPerMap; ++i) sum[i] += w * p[i];
         }
       }
-      auto next = std::lower_bound(correctedTets_.begin(), correctedTets_.end(), begin);
-      for (int j = begin; j < end; ++j) {
-        const double* sum = logs.data() + static_cast<size_t>(j - begin) * kParamsPerMap;
+      phiLinearBatch(logs.data(), targets.data() + begin, static_cast<size_t>(end - begin));
+      auto t = std::lower_bound(correctedTets_.begin(), correctedTets_.end(), begin);
+      for (; t != correctedTets_.end() && *t < end; ++t) {
+        const double* c = corrections_.data() + static_cast<size_t>(t - correctedTets_.begin()) *
+                                                    examples_ * kCorrectionSize;
+        Eigen::Vector3d correction = Eigen::Vector3d::Zero();
+        for (int k = 0; k < examples_; ++k) {
+          correction += weights[k] * Eigen::Map<const Eigen::Vector3d>(c + k * kCorrectionSize);
+        }
+        const double* sum = logs.data() + static_cast<size_t>(*t - begin) * kParamsPerMap;
         const double* y = sum + kStretchOffset;
         Eigen::Matrix3d stretch;
         stretch << y[0], y[1], y[2],  //
             y[1], y[3], y[4],         //
             y[2], y[4], y[5];
-        Eigen::Matrix3d rotation = so3Exp(Eigen::Map<const Eigen::Vector3d>(sum));
-        if (next != correctedTets_.end() && *next == j) {
-          const double* c =
-              corrections_.data() +
-              static_cast<size_t>(next - correctedTets_.begin()) * examples_ * kCorrectionSize;
-          Eigen::Vector3d correction = Eigen::Vector3d::Zero();
-          for (int k = 0; k < examples_; ++k) {
-            correction += weights[k] * Eigen::Map<const Eigen::Vector3d>(c + k * kCorrectionSize);
-          }
-          rotation *= so3Exp(correction);
-          ++next;
-        }
-        targets[j] = rotation * symExp(stretch);
+        targets[*t] =
+            so3Exp(Eigen::Map<const Eigen::Vector3d>(sum)) * so3Exp(correction) * symExp(stretch);
       }
     });
   }
