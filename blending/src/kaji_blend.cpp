@@ -8,7 +8,6 @@
 #include "tetblend/core/batch_kernels.h"
 #include "tetblend/core/kaji_ochiai.h"
 #include "tetblend/core/so3.h"
-#include "tetblend/core/sym3.h"
 
 namespace tetblend {
 namespace {
@@ -81,8 +80,7 @@ class KajiBlender final : public TetMapBlender {
   // non-zero correction; elsewhere this is exactly phi(sum_k w_k psi(F_kj))).
   // Each fixed chunk of tets sums its parameters into one contiguous array of
   // blended logarithms (w, then Y's upper triangle: phiLinearBatch's layout)
-  // and maps it through core's batched exponentials; the few corrected tets
-  // are then redone with their correction factor.
+  // and maps it through core's batched exponentials.
   void blendTargets(const std::vector<double>& weights,
                     std::vector<Eigen::Matrix3d>& targets) const override {
     checkWeights(weights, examples_);
@@ -97,23 +95,25 @@ class KajiBlender final : public TetMapBlender {
           for (int i = 0; i < kParamsPerMap; ++i) sum[i] += w * p[i];
         }
       }
-      phiLinearBatch(logs.data(), targets.data() + begin, static_cast<size_t>(end - begin));
-      auto t = std::lower_bound(correctedTets_.begin(), correctedTets_.end(), begin);
-      for (; t != correctedTets_.end() && *t < end; ++t) {
+      // Corrected tets: B = exp(base) [exp(correction) exp(Y)], the bracket
+      // batched with the others (the correction in place of the base).
+      const auto first = std::lower_bound(correctedTets_.begin(), correctedTets_.end(), begin);
+      const auto last = std::lower_bound(first, correctedTets_.end(), end);
+      std::vector<Eigen::Vector3d> bases(last - first);
+      for (auto t = first; t != last; ++t) {
         const double* c = corrections_.data() + static_cast<size_t>(t - correctedTets_.begin()) *
                                                     examples_ * kCorrectionSize;
-        Eigen::Vector3d correction = Eigen::Vector3d::Zero();
+        double* sum = logs.data() + static_cast<size_t>(*t - begin) * kParamsPerMap;
+        Eigen::Map<Eigen::Vector3d> rotationLog(sum);
+        bases[t - first] = rotationLog;
+        rotationLog.setZero();
         for (int k = 0; k < examples_; ++k) {
-          correction += weights[k] * Eigen::Map<const Eigen::Vector3d>(c + k * kCorrectionSize);
+          rotationLog += weights[k] * Eigen::Map<const Eigen::Vector3d>(c + k * kCorrectionSize);
         }
-        const double* sum = logs.data() + static_cast<size_t>(*t - begin) * kParamsPerMap;
-        const double* y = sum + kStretchOffset;
-        Eigen::Matrix3d stretch;
-        stretch << y[0], y[1], y[2],  //
-            y[1], y[3], y[4],         //
-            y[2], y[4], y[5];
-        targets[*t] =
-            so3Exp(Eigen::Map<const Eigen::Vector3d>(sum)) * so3Exp(correction) * symExp(stretch);
+      }
+      phiLinearBatch(logs.data(), targets.data() + begin, static_cast<size_t>(end - begin));
+      for (auto t = first; t != last; ++t) {
+        targets[*t] = so3Exp(bases[t - first]) * targets[*t];
       }
     });
   }
