@@ -36,6 +36,7 @@ ShapeBlender makeBlender(const ModelData& model, const std::vector<BlendMethod>&
   options.methods = methods;
   options.rotationConsistency = rotationConsistency;
   options.nonlinearStitch = nonlinearStitch;
+  options.keepTargets = true;  // the target_residual quality array needs the blended maps
   return ShapeBlender(model.rest, model.examples, options);
 }
 

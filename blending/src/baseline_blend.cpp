@@ -25,16 +25,16 @@ class LinearBlender final : public TetMapBlender {
     maps_ = blend_detail::tetMajorGradients(input, sizes);
   }
   BlendMethod method() const override { return BlendMethod::kLinear; }
-  void blendTargets(const std::vector<double>& weights,
-                    std::vector<Eigen::Matrix3d>& targets) const override {
-    checkWeights(weights, examples_);
+  int tetCount() const override { return tets_; }
+  int exampleCount() const override { return examples_; }
+  void blendRange(const std::vector<double>& weights, int begin, int end,
+                  Eigen::Matrix3d* out) const override {
     const double rest = restWeight(weights);
-    targets.resize(tets_);
-    forEachTet(tets_, [&](int j) {
+    for (int j = begin; j < end; ++j) {
       Eigen::Matrix3d sum = rest * Eigen::Matrix3d::Identity();
       for (int k = 0; k < examples_; ++k) sum += weights[k] * maps_[index(j, k)];
-      targets[j] = sum;
-    });
+      out[j - begin] = sum;
+    }
   }
 
  private:
@@ -69,17 +69,17 @@ class AlexaBlender final : public TetMapBlender {
     }
   }
   BlendMethod method() const override { return BlendMethod::kAlexa; }
-  void blendTargets(const std::vector<double>& weights,
-                    std::vector<Eigen::Matrix3d>& targets) const override {
-    checkWeights(weights, examples_);
-    targets.resize(tets_);
-    forEachTet(tets_, [&](int j) {
+  int tetCount() const override { return tets_; }
+  int exampleCount() const override { return examples_; }
+  void blendRange(const std::vector<double>& weights, int begin, int end,
+                  Eigen::Matrix3d* out) const override {
+    for (int j = begin; j < end; ++j) {
       Eigen::Matrix3d sum = Eigen::Matrix3d::Zero();
       for (int k = 0; k < examples_; ++k) {
         sum += weights[k] * logs_[static_cast<size_t>(j) * examples_ + k];
       }
-      targets[j] = sum.exp();
-    });
+      out[j - begin] = sum.exp();
+    }
   }
 
  private:
@@ -128,10 +128,10 @@ class PolarSlerpBlender final : public TetMapBlender {
     }
   }
   BlendMethod method() const override { return BlendMethod::kPolarSlerp; }
-  void blendTargets(const std::vector<double>& weights,
-                    std::vector<Eigen::Matrix3d>& targets) const override {
-    checkWeights(weights, examples_);
-    targets.resize(tets_);
+  int tetCount() const override { return tets_; }
+  int exampleCount() const override { return examples_; }
+  void blendRange(const std::vector<double>& weights, int begin, int end,
+                  Eigen::Matrix3d* out) const override {
     const std::vector<double> all = blend_detail::withRestWeight(weights);
     // polarSlerpBlend's pivot: the map of largest |weight| (first on ties;
     // index 0 is the rest), the same for every tet.
@@ -140,7 +140,7 @@ class PolarSlerpBlender final : public TetMapBlender {
       if (std::abs(all[i]) > std::abs(all[pivot])) pivot = i;
     }
     const Eigen::Vector4d identity = Eigen::Quaterniond::Identity().coeffs();
-    forEachTet(tets_, [&](int j) {
+    for (int j = begin; j < end; ++j) {
       Eigen::Matrix3d stretch = all[0] * Eigen::Matrix3d::Identity();
       for (int k = 0; k < examples_; ++k) {
         const double* y = param(j, k) + kQuaternionSize;
@@ -156,8 +156,8 @@ class PolarSlerpBlender final : public TetMapBlender {
       } catch (const DomainError& error) {
         blend_detail::rethrowForTet("polar-slerp", -1, j, error);
       }
-      targets[j] = rotation.toRotationMatrix() * stretch;
-    });
+      out[j - begin] = rotation.toRotationMatrix() * stretch;
+    }
   }
 
  private:

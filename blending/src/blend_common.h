@@ -17,7 +17,7 @@ namespace tetblend {
 namespace blend_detail {
 
 /// Tets per TBB task in the per-tet loops.
-constexpr int kTetGrain = 1024;
+constexpr int kTetGrain = kTetMapChunk;
 
 /// Runs body(j) for j in [0, count) in parallel; each j writes only its own
 /// outputs, so the result does not depend on the schedule.

@@ -99,6 +99,15 @@ std::unique_ptr<TetMapBlender> prepareTetMapBlender(BlendMethod method, const Bl
   throw InputError("blend method '" + blendMethodName(method) + "' is not available in this build");
 }
 
+void TetMapBlender::blendTargets(const std::vector<double>& weights,
+                                 std::vector<Eigen::Matrix3d>& targets) const {
+  checkWeights(weights, exampleCount());
+  targets.resize(tetCount());
+  blend_detail::forEachTetChunk(tetCount(), [&](int begin, int end) {
+    blendRange(weights, begin, end, targets.data() + begin);
+  });
+}
+
 namespace blend_detail {
 
 InputSizes checkInput(const BlendInput& input) {

@@ -41,26 +41,23 @@ class DualQuaternionBlender final : public TetMapBlender {
 
   BlendMethod method() const override { return method_; }
 
-  void blendTargets(const std::vector<double>& weights,
-                    std::vector<Eigen::Matrix3d>& targets) const override {
-    checkWeights(weights, examples_);
-    targets.resize(tets_);
+  int tetCount() const override { return tets_; }
+  int exampleCount() const override { return examples_; }
+
+  void blendRange(const std::vector<double>& weights, int begin, int end,
+                  Eigen::Matrix3d* out) const override {
     const std::vector<double> allWeights = blend_detail::withRestWeight(weights);
-    tbb::parallel_for(
-        tbb::blocked_range<int>(0, tets_, blend_detail::kTetGrain),
-        [&](const tbb::blocked_range<int>& range) {
-          std::vector<DualQuaternion> rotations(examples_ + 1);  // [0] is the rest
-          for (int j = range.begin(); j != range.end(); ++j) {
-            Eigen::Matrix<double, 6, 1> logStretch = Eigen::Matrix<double, 6, 1>::Zero();
-            for (int k = 0; k < examples_; ++k) {
-              const double* p = param(j, k);
-              rotations[k + 1] = DualQuaternion::fromRotationTranslation(
-                  Eigen::Quaterniond(p[0], p[1], p[2], p[3]), Eigen::Vector3d::Zero());
-              logStretch += weights[k] * Eigen::Map<const Eigen::Matrix<double, 6, 1>>(p + 4);
-            }
-            targets[j] = blendRotation(rotations, allWeights, j) * stretch(logStretch);
-          }
-        });
+    std::vector<DualQuaternion> rotations(examples_ + 1);  // [0] is the rest
+    for (int j = begin; j < end; ++j) {
+      Eigen::Matrix<double, 6, 1> logStretch = Eigen::Matrix<double, 6, 1>::Zero();
+      for (int k = 0; k < examples_; ++k) {
+        const double* p = param(j, k);
+        rotations[k + 1] = DualQuaternion::fromRotationTranslation(
+            Eigen::Quaterniond(p[0], p[1], p[2], p[3]), Eigen::Vector3d::Zero());
+        logStretch += weights[k] * Eigen::Map<const Eigen::Matrix<double, 6, 1>>(p + 4);
+      }
+      out[j - begin] = blendRotation(rotations, allWeights, j) * stretch(logStretch);
+    }
   }
 
  private:

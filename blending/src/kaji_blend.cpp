@@ -17,9 +17,9 @@ using blend_detail::homogeneous;
 
 // Parameters per tet and example: rotation lift base (3), then the upper
 // triangle of the stretch log (6), tet-major so one tet's examples are
-// contiguous. The lift corrections are zero except in the few tets where a
-// lift had to leave the principal branch (rotation_consistency.h), so they
-// are kept only for those tets (3 per example, in corrected-tet order).
+// contiguous. The lift corrections are zero except where a lift had to leave
+// the principal branch (rotation_consistency.h), so they are kept only for
+// those tets and examples (3 doubles and an example index each).
 constexpr int kParamsPerMap = 9;
 constexpr int kStretchOffset = 3;
 constexpr int kCorrectionSize = 3;
@@ -61,61 +61,70 @@ class KajiBlender final : public TetMapBlender {
         });
       }
     }
+    correctionStart_.push_back(0);
     for (int j = 0; j < tets_; ++j) {
       if (corrected[j] == 0) continue;
       correctedTets_.push_back(j);
       for (int k = 0; k < examples_; ++k) {
-        for (int i = 0; i < kCorrectionSize; ++i) corrections_.push_back(lifts[k][j].correction(i));
+        const Eigen::Vector3d& correction = lifts[k][j].correction;
+        if (correction.isZero(0.0)) continue;
+        correctionExample_.push_back(k);
+        corrections_.insert(corrections_.end(), correction.data(),
+                            correction.data() + kCorrectionSize);
       }
+      correctionStart_.push_back(static_cast<int>(correctionExample_.size()));
     }
     correctedTets_.shrink_to_fit();
+    correctionStart_.shrink_to_fit();
+    correctionExample_.shrink_to_fit();
     corrections_.shrink_to_fit();
   }
 
   BlendMethod method() const override { return BlendMethod::kKaji; }
 
+  int tetCount() const override { return tets_; }
+  int exampleCount() const override { return examples_; }
+
   // B_j = exp(sum w base) exp(sum w correction) exp(sum w Y): Kaji–Ochiai
   // phi (eq. (2)) of the blended parameters, with the rotation lift of
   // rotation_consistency.h (its correction factor only in the tets with a
   // non-zero correction; elsewhere this is exactly phi(sum_k w_k psi(F_kj))).
-  // Each fixed chunk of tets sums its parameters into one contiguous array of
-  // blended logarithms (w, then Y's upper triangle: phiLinearBatch's layout)
-  // and maps it through core's batched exponentials.
-  void blendTargets(const std::vector<double>& weights,
-                    std::vector<Eigen::Matrix3d>& targets) const override {
-    checkWeights(weights, examples_);
-    targets.resize(tets_);
-    blend_detail::forEachTetChunk(tets_, [&](int begin, int end) {
-      std::vector<double> logs(static_cast<size_t>(end - begin) * kParamsPerMap, 0.0);
-      for (int j = begin; j < end; ++j) {
-        double* sum = logs.data() + static_cast<size_t>(j - begin) * kParamsPerMap;
-        const double* p = param(j, 0);
-        for (int k = 0; k < examples_; ++k, p += kParamsPerMap) {
-          const double w = weights[k];
-          for (int i = 0; i < kParamsPerMap; ++i) sum[i] += w * p[i];
-        }
+  // The range (one fixed chunk of blendTargets) sums its parameters into one
+  // contiguous array of blended logarithms (w, then Y's upper triangle:
+  // phiLinearBatch's layout) and maps it through core's batched exponentials.
+  void blendRange(const std::vector<double>& weights, int begin, int end,
+                  Eigen::Matrix3d* out) const override {
+    std::vector<double> logs(static_cast<size_t>(end - begin) * kParamsPerMap, 0.0);
+    for (int j = begin; j < end; ++j) {
+      double* sum = logs.data() + static_cast<size_t>(j - begin) * kParamsPerMap;
+      const double* p = param(j, 0);
+      for (int k = 0; k < examples_; ++k, p += kParamsPerMap) {
+        const double w = weights[k];
+        for (int i = 0; i < kParamsPerMap; ++i) sum[i] += w * p[i];
       }
-      // Corrected tets: B = exp(base) [exp(correction) exp(Y)], the bracket
-      // batched with the others (the correction in place of the base).
-      const auto first = std::lower_bound(correctedTets_.begin(), correctedTets_.end(), begin);
-      const auto last = std::lower_bound(first, correctedTets_.end(), end);
-      std::vector<Eigen::Vector3d> bases(last - first);
-      for (auto t = first; t != last; ++t) {
-        const double* c = corrections_.data() + static_cast<size_t>(t - correctedTets_.begin()) *
-                                                    examples_ * kCorrectionSize;
-        double* sum = logs.data() + static_cast<size_t>(*t - begin) * kParamsPerMap;
-        Eigen::Map<Eigen::Vector3d> rotationLog(sum);
-        bases[t - first] = rotationLog;
-        rotationLog.setZero();
-        for (int k = 0; k < examples_; ++k) {
-          rotationLog += weights[k] * Eigen::Map<const Eigen::Vector3d>(c + k * kCorrectionSize);
-        }
+    }
+    // Corrected tets: B = exp(base) [exp(correction) exp(Y)], the bracket
+    // batched with the others (the correction in place of the base).
+    const auto first = std::lower_bound(correctedTets_.begin(), correctedTets_.end(), begin);
+    const auto last = std::lower_bound(first, correctedTets_.end(), end);
+    std::vector<Eigen::Vector3d> bases(last - first);
+    for (auto t = first; t != last; ++t) {
+      const auto index = t - correctedTets_.begin();
+      double* sum = logs.data() + static_cast<size_t>(*t - begin) * kParamsPerMap;
+      Eigen::Map<Eigen::Vector3d> rotationLog(sum);
+      bases[t - first] = rotationLog;
+      rotationLog.setZero();
+      // The zero corrections of the other examples add nothing.
+      for (int i = correctionStart_[index]; i < correctionStart_[index + 1]; ++i) {
+        rotationLog += weights[correctionExample_[i]] *
+                       Eigen::Map<const Eigen::Vector3d>(corrections_.data() +
+                                                         static_cast<size_t>(i) * kCorrectionSize);
       }
-      phiLinearBatch(logs.data(), targets.data() + begin, static_cast<size_t>(end - begin));
-      for (auto t = first; t != last; ++t) {
-        targets[*t] = so3Exp(bases[t - first]) * targets[*t];
-      }
-    });
+    }
+    phiLinearBatch(logs.data(), out, static_cast<size_t>(end - begin));
+    for (auto t = first; t != last; ++t) {
+      out[*t - begin] = so3Exp(bases[t - first]) * out[*t - begin];
+    }
   }
 
  private:
@@ -128,8 +137,14 @@ class KajiBlender final : public TetMapBlender {
   int tets_ = 0;
   int examples_ = 0;
   std::vector<double> params_;
-  std::vector<int> correctedTets_;   // ascending tets with a non-zero lift correction
-  std::vector<double> corrections_;  // their corrections, examples_ * 3 per tet
+  // The lift corrections, stored only where non-zero: the ascending tets with
+  // a non-zero correction in some example; for corrected tet i, the entries
+  // [correctionStart_[i], correctionStart_[i + 1]) of correctionExample_
+  // (which examples) and of corrections_ (3 doubles each).
+  std::vector<int> correctedTets_;
+  std::vector<int> correctionStart_;
+  std::vector<int> correctionExample_;
+  std::vector<double> corrections_;
 };
 
 class KajiFrechetBlender final : public TetMapBlender {
@@ -143,12 +158,13 @@ class KajiFrechetBlender final : public TetMapBlender {
 
   BlendMethod method() const override { return BlendMethod::kKajiFrechet; }
 
-  void blendTargets(const std::vector<double>& weights,
-                    std::vector<Eigen::Matrix3d>& targets) const override {
-    checkWeights(weights, examples_);
-    targets.resize(tets_);
-    forEachTet(tets_, [&](int j) {
-      std::vector<Eigen::Matrix4d> transforms(examples_);
+  int tetCount() const override { return tets_; }
+  int exampleCount() const override { return examples_; }
+
+  void blendRange(const std::vector<double>& weights, int begin, int end,
+                  Eigen::Matrix3d* out) const override {
+    std::vector<Eigen::Matrix4d> transforms(examples_);
+    for (int j = begin; j < end; ++j) {
       for (int k = 0; k < examples_; ++k) {
         transforms[k] = homogeneous(maps_[static_cast<size_t>(j) * examples_ + k]);
       }
@@ -164,8 +180,8 @@ class KajiFrechetBlender final : public TetMapBlender {
                 << result.iterations << " iterations for these weights; use 'kaji'";
         throw NumericalError(message.str());
       }
-      targets[j] = result.matrix.topLeftCorner<3, 3>();
-    });
+      out[j - begin] = result.matrix.topLeftCorner<3, 3>();
+    }
   }
 
  private:

@@ -70,31 +70,28 @@ class LieBodiesBlender final : public TetMapBlender {
   // of the world rotations W_k = R_k^T R_0 (rotation_consistency.h; for
   // corrections 0 this is exactly the rotation part of p0 exp(sum_k w_k X_k)).
   // The translation of E is irrelevant: the target uses only the edges.
-  void blendTargets(const std::vector<double>& weights,
-                    std::vector<Eigen::Matrix3d>& targets) const override {
-    checkWeights(weights, examples_);
-    targets.resize(tets_);
+  int tetCount() const override { return tets_; }
+  int exampleCount() const override { return examples_; }
+  void blendRange(const std::vector<double>& weights, int begin, int end,
+                  Eigen::Matrix3d* out) const override {
     const Eigen::VectorXd w = Eigen::Map<const Eigen::VectorXd>(weights.data(), examples_);
-    tbb::parallel_for(tbb::blocked_range<int>(0, tets_, blend_detail::kTetGrain),
-                      [&](const tbb::blocked_range<int>& range) {
-                        std::vector<LieBodyTangent> logs(examples_);
-                        for (int j = range.begin(); j != range.end(); ++j) {
-                          Eigen::Vector3d base = Eigen::Vector3d::Zero();
-                          Eigen::Vector3d correction = Eigen::Vector3d::Zero();
-                          for (int k = 0; k < examples_; ++k) {
-                            const size_t slot = static_cast<size_t>(j) * examples_ + k;
-                            logs[k] = logs_[slot];
-                            base += w(k) * lifts_[slot].base;
-                            correction += w(k) * lifts_[slot].correction;
-                          }
-                          Eigen::Matrix3d world = so3Exp(base);
-                          if (corrected_[j] != 0) world *= so3Exp(correction);
-                          LieBody blended = lieBodyBlend(restBodies_[j], logs, w);
-                          blended.rigid.topLeftCorner<3, 3>() =
-                              restBodies_[j].rigid.topLeftCorner<3, 3>() * world.transpose();
-                          targets[j] = lieBodyEdges(blended) * restInverseEdges_[j];
-                        }
-                      });
+    std::vector<LieBodyTangent> logs(examples_);
+    for (int j = begin; j < end; ++j) {
+      Eigen::Vector3d base = Eigen::Vector3d::Zero();
+      Eigen::Vector3d correction = Eigen::Vector3d::Zero();
+      for (int k = 0; k < examples_; ++k) {
+        const size_t slot = static_cast<size_t>(j) * examples_ + k;
+        logs[k] = logs_[slot];
+        base += w(k) * lifts_[slot].base;
+        correction += w(k) * lifts_[slot].correction;
+      }
+      Eigen::Matrix3d world = so3Exp(base);
+      if (corrected_[j] != 0) world *= so3Exp(correction);
+      LieBody blended = lieBodyBlend(restBodies_[j], logs, w);
+      blended.rigid.topLeftCorner<3, 3>() =
+          restBodies_[j].rigid.topLeftCorner<3, 3>() * world.transpose();
+      out[j - begin] = lieBodyEdges(blended) * restInverseEdges_[j];
+    }
   }
 
  private:

@@ -21,15 +21,15 @@ double secondsSince(Clock::time_point start) {
 
 ShapeBlender::ShapeBlender(const TetMesh& rest, const std::vector<Vertices>& examples,
                            const ShapeBlenderOptions& options)
-    : rest_(rest), examples_(examples), options_(options), stitch_(rest, options.stitch) {
+    : examples_(examples), options_(options), stitch_(rest, options.stitch) {
   if (examples_.empty()) throw InputError("shape blender: give at least one example");
   if (options_.methods.empty()) throw InputError("shape blender: options.methods is empty");
-  restCentroids_ = stitch_.componentCentroids(rest_.vertices);
+  restCentroids_ = stitch_.componentCentroids(rest.vertices);
   for (size_t k = 0; k < examples_.size(); ++k) {
-    if (examples_[k].rows() != rest_.vertices.rows()) {
+    if (examples_[k].rows() != rest.vertices.rows()) {
       std::ostringstream message;
       message << "example " << k << " has " << examples_[k].rows()
-              << " vertices but the rest mesh has " << rest_.vertices.rows()
+              << " vertices but the rest mesh has " << rest.vertices.rows()
               << ": the meshes must be compatible";
       throw InputError(message.str());
     }
@@ -48,17 +48,19 @@ void ShapeBlender::prepare(BlendMethod method) {
     blenders_[method] = nullptr;
     return;
   }
-  // The gradient fields and the adjacency are only needed while preparing.
+  // The rest data, gradient fields and adjacency are only needed while
+  // preparing.
+  const TetMesh& rest = stitch_.rest();
+  const RestTetData restData = stitch_.restData();
   std::vector<std::vector<Eigen::Matrix3d>> gradients;
   for (size_t k = 0; k < examples_.size(); ++k) {
-    gradients.push_back(
-        deformationGradients(rest_, stitch_.restData(), examples_[k], static_cast<int>(k)));
+    gradients.push_back(deformationGradients(rest, restData, examples_[k], static_cast<int>(k)));
   }
-  const TetAdjacency adjacency = buildTetAdjacency(rest_.tets);
+  const TetAdjacency adjacency = buildTetAdjacency(rest.tets);
   const TetComponents components = tetComponents(adjacency);
   BlendInput input;
-  input.rest = &rest_;
-  input.restData = &stitch_.restData();
+  input.rest = &rest;
+  input.restData = &restData;
   input.examples = &examples_;
   input.gradients = &gradients;
   input.adjacency = &adjacency;
@@ -103,13 +105,14 @@ void ShapeBlender::blendInto(const std::vector<double>& weights, BlendMethod met
   if (method == BlendMethod::kVertexLinear) {
     double restWeight = 1.0;
     for (double w : weights) restWeight -= w;
-    const auto rows = rest_.vertices.rows();
+    const Vertices& restVertices = stitch_.rest().vertices;
+    const auto rows = restVertices.rows();
     result.vertices.resize(rows, 3);
     result.targets.clear();
     tbb::parallel_for(tbb::blocked_range<Eigen::Index>(0, rows, 4096),
                       [&](const tbb::blocked_range<Eigen::Index>& range) {
                         for (Eigen::Index v = range.begin(); v != range.end(); ++v) {
-                          Eigen::RowVector3d sum = restWeight * rest_.vertices.row(v);
+                          Eigen::RowVector3d sum = restWeight * restVertices.row(v);
                           for (int k = 0; k < exampleCount(); ++k) {
                             sum += weights[k] * examples_[k].row(v);
                           }
@@ -119,11 +122,23 @@ void ShapeBlender::blendInto(const std::vector<double>& weights, BlendMethod met
     result.timings.blendSeconds = secondsSince(start);
     return;
   }
-  found->second->blendTargets(weights, result.targets);
-  result.timings.blendSeconds = secondsSince(start);
+  const TetMapBlender& blender = *found->second;
   StitchTimings stitchTimings;
+  StitchWorkspace workspace;
   const Centroids centroids = blendedCentroids(weights);
-  stitch_.solveInto(result.targets, centroids, result.vertices, &stitchTimings);
+  if (options_.keepTargets || options_.nonlinearStitch) {
+    blender.blendTargets(weights, result.targets);
+    result.timings.blendSeconds = secondsSince(start);
+    stitch_.solveInto(result.targets, centroids, result.vertices, workspace, &stitchTimings);
+  } else {
+    // Fused: each chunk of maps goes into the right-hand side as it is
+    // blended (the chunks of blendTargets, so the same vertices bit for bit).
+    std::vector<Eigen::Matrix3d>().swap(result.targets);
+    stitch_.solveInto([&](int begin, int end,
+                          Eigen::Matrix3d* out) { blender.blendRange(weights, begin, end, out); },
+                      centroids, result.vertices, workspace, &stitchTimings);
+    result.timings.blendSeconds = stitchTimings.targetSeconds;
+  }
   result.timings.rhsSeconds = stitchTimings.rhsSeconds;
   result.timings.solveSeconds = stitchTimings.solveSeconds;
   result.nonlinear = NonlinearStitchReport{};
@@ -136,7 +151,7 @@ void ShapeBlender::blendInto(const std::vector<double>& weights, BlendMethod met
 }
 
 int ShapeBlender::exampleCount() const { return static_cast<int>(examples_.size()); }
-const TetMesh& ShapeBlender::rest() const { return rest_; }
+const TetMesh& ShapeBlender::rest() const { return stitch_.rest(); }
 const StitchSolver& ShapeBlender::stitch() const { return stitch_; }
 const ShapeBlenderOptions& ShapeBlender::options() const { return options_; }
 

@@ -3,11 +3,14 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
+#include <Eigen/Geometry>
+#include <Eigen/LU>
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>
 #include <algorithm>
 #include <chrono>
 #include <cstdint>
+#include <functional>
 #include <numeric>
 #include <sstream>
 
@@ -26,8 +29,10 @@ using RowMatrix3 = Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>;
 using Clock = std::chrono::steady_clock;
 
 // Fixed number of tet chunks of the right-hand side (a constant, not the
-// thread count, so the summation order never changes).
-constexpr int kRhsChunks = 8;
+// thread count, so the summation order never changes). Each starts at a
+// multiple of kTetMapChunk, so a fused solve blends the same fixed ranges as
+// TetMapBlender::blendTargets.
+constexpr int kRhsChunks = 16;
 
 double secondsSince(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
@@ -48,14 +53,31 @@ int findRoot(std::vector<int>& parent, int v) {
   return v;
 }
 
+// vol_j D_rest,j^-T = cof(D_rest,j) / 6: its columns are the cross products
+// e2 x e3, e3 x e1, e1 x e2 of the rest edges, divided by 6 (D^-1 =
+// cof(D)^T / det D and vol = det D / 6), so the right-hand side needs no
+// stored inverse or volume per tet.
+Eigen::Matrix3d weightedInverseTranspose(const Vertices& vertices, const Eigen::RowVector4i& tet) {
+  const Eigen::Vector3d p0 = vertices.row(tet(0)).transpose();
+  const Eigen::Vector3d e1 = vertices.row(tet(1)).transpose() - p0;
+  const Eigen::Vector3d e2 = vertices.row(tet(2)).transpose() - p0;
+  const Eigen::Vector3d e3 = vertices.row(tet(3)).transpose() - p0;
+  Eigen::Matrix3d columns;
+  columns.col(0) = e2.cross(e3) / 6.0;
+  columns.col(1) = e3.cross(e1) / 6.0;
+  columns.col(2) = e1.cross(e2) / 6.0;
+  return columns;
+}
+
 }  // namespace
 
 struct StitchSolver::Impl {
-  Tets tets;
-  RestTetData rest;
+  // The rest mesh (#V by 3 vertices, #T by 4 tets); per-tet rest data is
+  // recomputed from it where needed rather than stored (72 + 8 bytes per tet).
+  TetMesh rest;
   std::vector<int> component;      // #V labels
   std::vector<int> componentSize;  // #C vertex counts
-  std::vector<int> reducedIndex;   // #V, -1 for pinned vertices
+  std::vector<int> reducedIndex;   // #V, -1 for pinned vertices (construction only)
   std::vector<int> freeVertices;   // reduced index -> vertex
   // The tets in kRhsChunks contiguous ranges [chunkTet[c], chunkTet[c + 1]),
   // whose corners lie in the vertex ranges [chunkLow[c], chunkHigh[c]).
@@ -83,10 +105,10 @@ struct StitchSolver::Impl {
   void buildComponents(int vertexCount) {
     std::vector<int> parent(vertexCount);
     std::iota(parent.begin(), parent.end(), 0);
-    for (Eigen::Index j = 0; j < tets.rows(); ++j) {
-      const int a = findRoot(parent, tets(j, 0));
+    for (Eigen::Index j = 0; j < tets().rows(); ++j) {
+      const int a = findRoot(parent, tets()(j, 0));
       for (int c = 1; c < 4; ++c) {
-        const int b = findRoot(parent, tets(j, c));
+        const int b = findRoot(parent, tets()(j, c));
         if (a != b) parent[b] = a;
       }
     }
@@ -110,17 +132,18 @@ struct StitchSolver::Impl {
   }
 
   void buildChunks() {
-    const auto tetCount = static_cast<int>(tets.rows());
+    const auto tetCount = static_cast<int>(tets().rows());
+    const int64_t mapChunks = (tetCount + kTetMapChunk - 1) / kTetMapChunk;
     chunkTet.resize(kRhsChunks + 1);
     chunkLow.assign(kRhsChunks, 0);
     chunkHigh.assign(kRhsChunks, 0);
     chunkOffset.assign(kRhsChunks + 1, 0);
     for (int c = 0; c <= kRhsChunks; ++c) {
-      chunkTet[c] = static_cast<int>(static_cast<int64_t>(tetCount) * c / kRhsChunks);
+      chunkTet[c] = std::min(tetCount, static_cast<int>(mapChunks * c / kRhsChunks * kTetMapChunk));
     }
     for (int c = 0; c < kRhsChunks; ++c) {
       if (chunkTet[c] < chunkTet[c + 1]) {
-        const auto block = tets.middleRows(chunkTet[c], chunkTet[c + 1] - chunkTet[c]);
+        const auto block = tets().middleRows(chunkTet[c], chunkTet[c + 1] - chunkTet[c]);
         chunkLow[c] = block.minCoeff();
         chunkHigh[c] = block.maxCoeff() + 1;
       }
@@ -128,30 +151,45 @@ struct StitchSolver::Impl {
     }
   }
 
+  const Tets& tets() const { return rest.tets; }
+
   // rhs(r, :) = sum over the tets j of free vertex r (corner c) of
   // vol_j B_j g_c (Sumner-Popovic eq. 6's right-hand side), rows in reduced
   // order; row rowOf[r] receives free vertex r (identity when rowOf is empty).
   // Each tet is visited once: C = vol_j B_j D_rest,j^-T holds vol_j B_j g_c
   // for corners 1..3 in its columns, and corner 0 gets minus their sum. The
   // chunks of tets are summed in parallel, each sequentially into its own
-  // vertex-range buffer; every vertex then adds the buffers in chunk order,
-  // so the result does not depend on the schedule or the thread count.
-  template <typename Rhs>
-  void assembleRhs(const std::vector<Eigen::Matrix3d>& targets, const std::vector<int>& rowOf,
-                   RowMatrix3& buffer, Rhs& rhs) const {
+  // vertex-range buffer, kTetMapChunk tets at a time: targets(begin, end,
+  // scratch) returns B_j for those tets (a pointer into a stored field, or
+  // scratch filled by a blender). Every vertex then adds the buffers in chunk
+  // order, so the result does not depend on the schedule or the thread count.
+  // Returns the thread-seconds spent in targets() and in the whole pass.
+  template <typename Targets, typename Rhs>
+  std::pair<double, double> assembleRhs(const Targets& targets, const std::vector<int>& rowOf,
+                                        RowMatrix3& buffer, Rhs& rhs) const {
     buffer.resize(chunkOffset[kRhsChunks], 3);
+    std::vector<double> targetSeconds(kRhsChunks, 0.0), chunkSeconds(kRhsChunks, 0.0);
     tbb::parallel_for(0, kRhsChunks, [&](int c) {
+      const auto chunkStart = Clock::now();
       auto sums = buffer.middleRows(chunkOffset[c], chunkHigh[c] - chunkLow[c]);
       sums.setZero();
       const int low = chunkLow[c];
-      for (int j = chunkTet[c]; j < chunkTet[c + 1]; ++j) {
-        const Eigen::Matrix3d columns =
-            rest.volumes[j] * (targets[j] * rest.inverseEdges[j].transpose());
-        sums.row(tets(j, 0) - low) -= columns.rowwise().sum().transpose();
-        for (int corner = 1; corner < 4; ++corner) {
-          sums.row(tets(j, corner) - low) += columns.col(corner - 1).transpose();
+      std::vector<Eigen::Matrix3d> scratch(kTetMapChunk);
+      for (int begin = chunkTet[c]; begin < chunkTet[c + 1]; begin += kTetMapChunk) {
+        const int end = std::min(chunkTet[c + 1], begin + kTetMapChunk);
+        const auto targetStart = Clock::now();
+        const Eigen::Matrix3d* maps = targets(begin, end, scratch.data());
+        targetSeconds[c] += secondsSince(targetStart);
+        for (int j = begin; j < end; ++j) {
+          const Eigen::Matrix3d columns =
+              maps[j - begin] * weightedInverseTranspose(rest.vertices, rest.tets.row(j));
+          sums.row(rest.tets(j, 0) - low) -= columns.rowwise().sum().transpose();
+          for (int corner = 1; corner < 4; ++corner) {
+            sums.row(rest.tets(j, corner) - low) += columns.col(corner - 1).transpose();
+          }
         }
       }
+      chunkSeconds[c] = secondsSince(chunkStart);
     });
     const auto freeCount = static_cast<Eigen::Index>(freeVertices.size());
     tbb::parallel_for(tbb::blocked_range<Eigen::Index>(0, freeCount, 4096),
@@ -167,21 +205,27 @@ struct StitchSolver::Impl {
                           rhs.row(rowOf.empty() ? r : rowOf[r]) = sum;
                         }
                       });
+    double targetTotal = 0.0, chunkTotal = 0.0;
+    for (int c = 0; c < kRhsChunks; ++c) {
+      targetTotal += targetSeconds[c];
+      chunkTotal += chunkSeconds[c];
+    }
+    return {targetTotal, chunkTotal};
   }
 
-  SparseMatrix reducedNormalMatrix() const {
+  SparseMatrix reducedNormalMatrix(const RestTetData& data) const {
     std::vector<Eigen::Triplet<double>> triplets;
-    triplets.reserve(10 * static_cast<size_t>(tets.rows()));
-    for (Eigen::Index j = 0; j < tets.rows(); ++j) {
+    triplets.reserve(10 * static_cast<size_t>(tets().rows()));
+    for (Eigen::Index j = 0; j < tets().rows(); ++j) {
       Eigen::Vector3d g[4];
-      for (int c = 0; c < 4; ++c) g[c] = cornerGradient(rest.inverseEdges[j], c);
+      for (int c = 0; c < 4; ++c) g[c] = cornerGradient(data.inverseEdges[j], c);
       for (int a = 0; a < 4; ++a) {
-        const int ra = reducedIndex[tets(j, a)];
+        const int ra = reducedIndex[tets()(j, a)];
         if (ra < 0) continue;
         for (int b = 0; b < 4; ++b) {
-          const int rb = reducedIndex[tets(j, b)];
+          const int rb = reducedIndex[tets()(j, b)];
           if (rb < 0 || rb < ra) continue;  // lower triangle (row >= column) only
-          triplets.emplace_back(rb, ra, rest.volumes[j] * g[a].dot(g[b]));
+          triplets.emplace_back(rb, ra, data.volumes[j] * g[a].dot(g[b]));
         }
       }
     }
@@ -221,12 +265,16 @@ StitchWorkspace& StitchWorkspace::operator=(StitchWorkspace&&) noexcept = defaul
 StitchSolver::StitchSolver(const TetMesh& rest, const StitchOptions& options)
     : impl_(std::make_unique<Impl>()) {
   Impl& m = *impl_;
-  m.tets = rest.tets;
-  m.rest = restTetData(rest);
-  const int vertexCount = static_cast<int>(rest.vertices.rows());
-  m.buildComponents(vertexCount);
-  m.buildChunks();
-  SparseMatrix matrix = m.reducedNormalMatrix();
+  SparseMatrix matrix;
+  {
+    // Checks the rest tets first (InputError); freed once the matrix is built.
+    const RestTetData data = restTetData(rest);
+    m.rest = rest;
+    m.buildComponents(static_cast<int>(rest.vertices.rows()));
+    m.buildChunks();
+    matrix = m.reducedNormalMatrix(data);
+    std::vector<int>().swap(m.reducedIndex);  // only needed to build the matrix
+  }
 #ifdef TETBLEND_HAVE_CHOLMOD
   if (options.backend == StitchBackend::kCholmodSupernodal && matrix.rows() > 0) {
     m.backend = StitchBackend::kCholmodSupernodal;
@@ -245,11 +293,12 @@ StitchSolver::StitchSolver(StitchSolver&&) noexcept = default;
 StitchSolver& StitchSolver::operator=(StitchSolver&&) noexcept = default;
 
 int StitchSolver::vertexCount() const { return static_cast<int>(impl_->component.size()); }
-int StitchSolver::tetCount() const { return static_cast<int>(impl_->tets.rows()); }
+int StitchSolver::tetCount() const { return static_cast<int>(impl_->rest.tets.rows()); }
 int StitchSolver::componentCount() const { return static_cast<int>(impl_->componentSize.size()); }
 const std::vector<int>& StitchSolver::vertexComponent() const { return impl_->component; }
-const RestTetData& StitchSolver::restData() const { return impl_->rest; }
-const Tets& StitchSolver::tets() const { return impl_->tets; }
+RestTetData StitchSolver::restData() const { return restTetData(impl_->rest); }
+const Tets& StitchSolver::tets() const { return impl_->rest.tets; }
+const TetMesh& StitchSolver::rest() const { return impl_->rest; }
 StitchBackend StitchSolver::backend() const { return impl_->backend; }
 
 double StitchSolver::factorNonzeros() const {
@@ -257,6 +306,26 @@ double StitchSolver::factorNonzeros() const {
   if (impl_->supernodal) return impl_->supernodal->nonzeros();
 #endif
   return static_cast<double>(impl_->ldlt.matrixL().nestedExpression().nonZeros());
+}
+
+double StitchSolver::memoryBytes() const {
+  const Impl& m = *impl_;
+  const auto ints = [](const auto& v) { return static_cast<double>(sizeof(int) * v.size()); };
+  double bytes = static_cast<double>(sizeof(double) * m.rest.vertices.size() +
+                                     sizeof(int) * m.rest.tets.size()) +
+                 ints(m.component) + ints(m.componentSize) + ints(m.reducedIndex) +
+                 ints(m.freeVertices) + ints(m.chunkTet) + ints(m.chunkLow) + ints(m.chunkHigh) +
+                 static_cast<double>(sizeof(Eigen::Index) * m.chunkOffset.size());
+#ifdef TETBLEND_HAVE_CHOLMOD
+  if (m.supernodal) {
+    return bytes + m.supernodal->bytes() + ints(m.factorRow) + ints(m.factorVertex);
+  }
+#endif
+  // SimplicialLDLT: L's values and row indices, its column starts, D and the
+  // two permutations.
+  const auto n = static_cast<double>(m.freeVertices.size());
+  const double nonzeros = static_cast<double>(m.ldlt.matrixL().nestedExpression().nonZeros());
+  return bytes + nonzeros * (sizeof(double) + sizeof(int)) + n * (sizeof(double) + 3 * sizeof(int));
 }
 
 Centroids StitchSolver::componentCentroids(const Vertices& vertices) const {
@@ -289,33 +358,68 @@ void StitchSolver::solveInto(const std::vector<Eigen::Matrix3d>& targets,
 void StitchSolver::solveInto(const std::vector<Eigen::Matrix3d>& targets,
                              const Centroids& centroids, Vertices& result,
                              StitchWorkspace& workspace, StitchTimings* timings) const {
+  if (static_cast<int>(targets.size()) != tetCount()) {
+    std::ostringstream message;
+    message << "stitch: got " << targets.size() << " target maps for a mesh with " << tetCount()
+            << " tets";
+    throw InputError(message.str());
+  }
+  solveImpl([&](int begin, int, Eigen::Matrix3d*) { return targets.data() + begin; }, centroids,
+            result, workspace, timings);
+}
+
+void StitchSolver::solveInto(const TargetRangeFunction& targets, const Centroids& centroids,
+                             Vertices& result, StitchWorkspace& workspace,
+                             StitchTimings* timings) const {
+  solveImpl(
+      [&](int begin, int end, Eigen::Matrix3d* scratch) {
+        targets(begin, end, scratch);
+        return static_cast<const Eigen::Matrix3d*>(scratch);
+      },
+      centroids, result, workspace, timings);
+}
+
+template <typename Targets>
+void StitchSolver::solveImpl(const Targets& targets, const Centroids& centroids, Vertices& result,
+                             StitchWorkspace& workspace, StitchTimings* timings) const {
   const Impl& m = *impl_;
   StitchWorkspace::Impl& w = *workspace.impl_;
-  if (static_cast<int>(targets.size()) != tetCount() || centroids.rows() != componentCount()) {
+  if (centroids.rows() != componentCount()) {
     std::ostringstream message;
-    message << "stitch: got " << targets.size() << " target maps and " << centroids.rows()
-            << " centroids for a mesh with " << tetCount() << " tets and " << componentCount()
-            << " components";
+    message << "stitch: got " << centroids.rows() << " centroids for a mesh with "
+            << componentCount() << " components";
     throw InputError(message.str());
   }
   auto start = Clock::now();
   const auto freeCount = static_cast<Eigen::Index>(m.freeVertices.size());
   result.setZero(vertexCount(), 3);
+  w.values.resize(freeCount, 3);
+  std::pair<double, double> threadSeconds{0.0, 0.0};
 #ifdef TETBLEND_HAVE_CHOLMOD
   if (m.backend == StitchBackend::kCholmodSupernodal) {
-    w.values.resize(freeCount, 3);
-    m.assembleRhs(targets, m.factorRow, w.chunkSums, w.values);
-    if (timings != nullptr) timings->rhsSeconds = secondsSince(start);
-    start = Clock::now();
+    threadSeconds = m.assembleRhs(targets, m.factorRow, w.chunkSums, w.values);
+  }
+#endif
+  if (m.backend == StitchBackend::kEigenSimplicialLdlt) {
+    threadSeconds = m.assembleRhs(targets, {}, w.chunkSums, w.values);
+  }
+  if (timings != nullptr) {
+    // The pass's wall time, split in the ratio of the thread time spent
+    // producing the maps to the thread time of the whole pass.
+    const double wall = secondsSince(start);
+    const double share =
+        threadSeconds.second > 0.0 ? threadSeconds.first / threadSeconds.second : 0.0;
+    timings->targetSeconds = wall * share;
+    timings->rhsSeconds = wall - timings->targetSeconds;
+  }
+  start = Clock::now();
+#ifdef TETBLEND_HAVE_CHOLMOD
+  if (m.backend == StitchBackend::kCholmodSupernodal) {
     m.supernodal->solve(w.values, w.workspace);
     for (Eigen::Index k = 0; k < freeCount; ++k) result.row(m.factorVertex[k]) = w.values.row(k);
   }
 #endif
   if (m.backend == StitchBackend::kEigenSimplicialLdlt) {
-    w.values.resize(freeCount, 3);
-    m.assembleRhs(targets, {}, w.chunkSums, w.values);
-    if (timings != nullptr) timings->rhsSeconds = secondsSince(start);
-    start = Clock::now();
     w.solution = m.ldlt.solve(w.values);
     for (Eigen::Index r = 0; r < freeCount; ++r) result.row(m.freeVertices[r]) = w.solution.row(r);
   }
@@ -325,13 +429,17 @@ void StitchSolver::solveInto(const std::vector<Eigen::Matrix3d>& targets,
 }
 
 Eigen::Matrix3d StitchSolver::gradient(const Vertices& x, int tet) const {
-  return tetEdgeMatrix(x, impl_->tets.row(tet)) * impl_->rest.inverseEdges[tet];
+  const Eigen::RowVector4i corners = impl_->rest.tets.row(tet);
+  return tetEdgeMatrix(x, corners) * tetEdgeMatrix(impl_->rest.vertices, corners).inverse();
 }
 
 double StitchSolver::energy(const Vertices& x, const std::vector<Eigen::Matrix3d>& targets) const {
   double sum = 0.0;
   for (int j = 0; j < tetCount(); ++j) {
-    sum += impl_->rest.volumes[j] * (gradient(x, j) - targets[j]).squaredNorm();
+    const Eigen::RowVector4i corners = impl_->rest.tets.row(j);
+    const Eigen::Matrix3d edges = tetEdgeMatrix(impl_->rest.vertices, corners);
+    const double volume = edges.determinant() / 6.0;
+    sum += volume * (tetEdgeMatrix(x, corners) * edges.inverse() - targets[j]).squaredNorm();
   }
   return sum;
 }

@@ -38,6 +38,7 @@ void expectPolarSlerpMatchesCore(int exampleCount, std::mt19937& rng) {
   examples.resize(exampleCount);
   ShapeBlenderOptions options;
   options.methods = {BlendMethod::kPolarSlerp};
+  options.keepTargets = true;
   const ShapeBlender blender(rest, examples, options);
   std::vector<std::vector<Eigen::Matrix3d>> gradients;
   for (int k = 0; k < exampleCount; ++k) {

@@ -60,18 +60,36 @@ struct BlendInput {
   bool rotationConsistency = true;
 };
 
+/// Tets per chunk of a prepared method's blend: blendTargets blends the fixed
+/// ranges [c kTetMapChunk, min((c + 1) kTetMapChunk, #T)), and blendRange
+/// gives bitwise the same maps for the same ranges (a batched method's
+/// rounding may depend on a tet's place in its batch).
+constexpr int kTetMapChunk = 1024;
+
 /// A method prepared for one rest mesh and its examples.
 class TetMapBlender {
  public:
   virtual ~TetMapBlender() = default;
   /// The method this object implements.
   virtual BlendMethod method() const = 0;
+  /// Number of tets #T and of examples n it was prepared for.
+  virtual int tetCount() const = 0;
+  virtual int exampleCount() const = 0;
+  /// Writes the target linear maps B_j (3 by 3) of tets j in [begin, end)
+  /// into out[0 .. end - begin) for `weights` (n finite reals, already
+  /// checked with checkWeights). Sequential; safe to call concurrently on
+  /// disjoint ranges. Throws DomainError naming the tet where the method
+  /// cannot blend these weights. Pass the chunks of kTetMapChunk for results
+  /// identical to blendTargets.
+  virtual void blendRange(const std::vector<double>& weights, int begin, int end,
+                          Eigen::Matrix3d* out) const = 0;
   /// Writes the #T target linear maps B_j (3 by 3) for `weights` (one per
-  /// example, any reals) into `targets` (resized). Parallel over tets,
-  /// deterministic. Throws InputError for a wrong weight count and
-  /// DomainError naming the tet where the method cannot blend these weights.
-  virtual void blendTargets(const std::vector<double>& weights,
-                            std::vector<Eigen::Matrix3d>& targets) const = 0;
+  /// example, any reals) into `targets` (resized): blendRange on every chunk
+  /// of kTetMapChunk tets, in parallel, deterministic. Throws InputError for a
+  /// wrong weight count and DomainError naming the tet where the method
+  /// cannot blend these weights.
+  void blendTargets(const std::vector<double>& weights,
+                    std::vector<Eigen::Matrix3d>& targets) const;
 };
 
 /// Parametrises the examples of `input` once for `method` (all but

@@ -29,6 +29,12 @@ struct ShapeBlenderOptions {
   bool rotationConsistency = true;
   /// Factorisation of the stitch.
   StitchOptions stitch;
+  /// Keep the #T blended maps in BlendResult::targets (72 bytes per tet; what
+  /// tetQuality's stitch residual needs). Off: each chunk of maps is added to
+  /// the stitch's right-hand side as soon as it is blended and none is kept
+  /// (targets empty; the vertices are bitwise the same either way). Implied
+  /// by nonlinearStitch, which needs the maps.
+  bool keepTargets = false;
   /// Run the nonlinear stitch (nonlinear_stitch.h) after the linear one when
   /// the linear result has inverted tets. Off by default (it costs Ceres
   /// solves); not used by vertex-linear.
@@ -38,7 +44,10 @@ struct ShapeBlenderOptions {
 
 /// Wall-clock seconds of the parts of one blend.
 struct BlendTimings {
-  double blendSeconds = 0.0;      ///< per-tet target maps (or vertex blend)
+  /// Per-tet target maps (or vertex blend). Without keepTargets the maps are
+  /// blended inside the right-hand-side pass, whose wall time is split
+  /// between this and rhsSeconds in the ratio of the threads' times.
+  double blendSeconds = 0.0;
   double rhsSeconds = 0.0;        ///< stitch right-hand side
   double solveSeconds = 0.0;      ///< back-substitution and centroid placement
   double nonlinearSeconds = 0.0;  ///< nonlinear stitch, when enabled
@@ -47,8 +56,10 @@ struct BlendTimings {
 /// One blended shape.
 struct BlendResult {
   BlendMethod method = BlendMethod::kKaji;
-  Vertices vertices;                     ///< #V by 3, the rest's vertex order
-  std::vector<Eigen::Matrix3d> targets;  ///< #T blended maps B_j (empty for vertex-linear)
+  Vertices vertices;  ///< #V by 3, the rest's vertex order
+  /// #T blended maps B_j when options.keepTargets or options.nonlinearStitch
+  /// is set; empty otherwise and for vertex-linear.
+  std::vector<Eigen::Matrix3d> targets;
   BlendTimings timings;
   /// Filled when options.nonlinearStitch is set (zeros otherwise).
   NonlinearStitchReport nonlinear;
@@ -86,6 +97,7 @@ class ShapeBlender {
   void blendInto(const std::vector<double>& weights, BlendMethod method, BlendResult& result) const;
 
   int exampleCount() const;
+  /// The rest mesh (the stitch solver's copy; the blender keeps no other).
   const TetMesh& rest() const;
   const StitchSolver& stitch() const;
   const ShapeBlenderOptions& options() const;
@@ -94,8 +106,7 @@ class ShapeBlender {
   Centroids blendedCentroids(const std::vector<double>& weights) const;
 
  private:
-  TetMesh rest_;
-  std::vector<Vertices> examples_;
+  std::vector<Vertices> examples_;  // kept for vertex-linear and later prepare()
   ShapeBlenderOptions options_;
   StitchSolver stitch_;
   Centroids restCentroids_;

@@ -10,9 +10,11 @@
 // vector costs one right-hand side and one back-substitution.
 
 #include <Eigen/Core>
+#include <functional>
 #include <memory>
 #include <vector>
 
+#include "tetblend/blending/blend_method.h"
 #include "tetblend/blending/tet_maps.h"
 #include "tetblend/core/mesh_types.h"
 
@@ -36,6 +38,10 @@ using Centroids = Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>;
 
 /// Seconds spent in the two halves of StitchSolver::solveInto.
 struct StitchTimings {
+  /// Producing the target maps inside the right-hand-side pass (the fused
+  /// solveInto; about 0 when the maps are given as a vector). The pass's wall
+  /// time is split between this and rhsSeconds in the ratio of thread times.
+  double targetSeconds = 0.0;
   double rhsSeconds = 0.0;    ///< assembling G^T W B (parallel)
   double solveSeconds = 0.0;  ///< back-substitution and centroid placement
 };
@@ -90,8 +96,11 @@ class StitchSolver {
   int componentCount() const;
   /// Component label (0..C-1) of each of the #V vertices.
   const std::vector<int>& vertexComponent() const;
-  /// The rest per-tet data (inverse edge matrices, volumes) the solver uses.
-  const RestTetData& restData() const;
+  /// The rest per-tet data (inverse edge matrices, volumes), computed on
+  /// each call (the solver keeps only the rest mesh: 80 bytes per tet less).
+  RestTetData restData() const;
+  /// The rest mesh (#V by 3 vertices, #T by 4 tets) the solver was built for.
+  const TetMesh& rest() const;
   /// The rest tets (#T by 4).
   const Tets& tets() const;
   /// The backend actually used.
@@ -99,6 +108,10 @@ class StitchSolver {
   /// Stored entries of the Cholesky factor (8 bytes each, plus a few percent
   /// of indices; each solve reads them twice).
   double factorNonzeros() const;
+  /// Heap bytes the solver holds between solves: the factor (values and
+  /// indices), the rest mesh and the per-vertex index arrays (exact for the
+  /// supernodal backend, the stored arrays' sizes for SimplicialLDLT).
+  double memoryBytes() const;
 
   /// Mean of the vertices of each component (#C by 3) of `vertices` (#V by 3).
   Centroids componentCentroids(const Vertices& vertices) const;
@@ -121,6 +134,21 @@ class StitchSolver {
                  Vertices& result, StitchWorkspace& workspace,
                  StitchTimings* timings = nullptr) const;
 
+  /// Writes the target maps B_j of tets [begin, end) into out[0 .. end -
+  /// begin), for the fused solveInto.
+  using TargetRangeFunction = std::function<void(int begin, int end, Eigen::Matrix3d* out)>;
+
+  /// As solveInto, without a stored target field: the right-hand-side pass
+  /// asks `targets` for the maps of each range of at most kTetMapChunk tets
+  /// (each starting at a multiple of kTetMapChunk: the chunks of
+  /// TetMapBlender::blendTargets), from several threads at once on disjoint
+  /// ranges, and adds them in at once, so only kTetMapChunk maps per thread
+  /// exist at a time. Gives bitwise the solution of solveInto on the field
+  /// the same function would fill. timings->targetSeconds is the share of
+  /// the pass spent in `targets`.
+  void solveInto(const TargetRangeFunction& targets, const Centroids& centroids, Vertices& result,
+                 StitchWorkspace& workspace, StitchTimings* timings = nullptr) const;
+
   /// Deformation gradient grad_j(x) (3 by 3) of tet j for positions `x`.
   Eigen::Matrix3d gradient(const Vertices& x, int tet) const;
 
@@ -128,6 +156,10 @@ class StitchSolver {
   double energy(const Vertices& x, const std::vector<Eigen::Matrix3d>& targets) const;
 
  private:
+  template <typename Targets>
+  void solveImpl(const Targets& targets, const Centroids& centroids, Vertices& result,
+                 StitchWorkspace& workspace, StitchTimings* timings) const;
+
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };
