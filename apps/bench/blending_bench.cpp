@@ -16,6 +16,11 @@
 //                                mesh and it keeps the examples; the bench
 //                                keeps none) plus one BlendResult (vertices
 //                                only: keepTargets is off)
+//   anon_B_per_tet               the same growth of the anonymous resident
+//                                memory only (RssAnon: without the pages of
+//                                the program and shared libraries, e.g. the
+//                                BLAS and CHOLMOD code first run while
+//                                preparing)
 //   maxrss_B_per_tet             process peak RSS (ru_maxrss) / tets, which
 //                                includes preparation and the refactor's
 //                                second factor
@@ -37,6 +42,7 @@
 #include <fstream>
 #include <map>
 #include <memory>
+#include <string>
 
 #include "tetblend/blending/shape_blender.h"
 #include "tetblend/meshing/procedural_shapes.h"
@@ -65,10 +71,29 @@ double currentRssBytes() {
   return resident * static_cast<double>(sysconf(_SC_PAGESIZE));
 }
 
+// Anonymous resident memory now (RssAnon of /proc/self/status: heap and
+// private mappings, without the file-backed pages of the program and its
+// shared libraries), after malloc_trim.
+double anonymousRssBytes() {
+  malloc_trim(0);
+  std::ifstream status("/proc/self/status");
+  std::string key;
+  while (status >> key) {
+    if (key == "RssAnon:") {
+      double kilobytes = 0.0;
+      status >> kilobytes;
+      return 1024.0 * kilobytes;
+    }
+    status.ignore(1 << 20, '\n');
+  }
+  return 0.0;
+}
+
 struct Model {
   std::unique_ptr<ShapeBlender> blender;
   double prepareSeconds = 0.0;
-  double rssBeforeBytes = 0.0;  // resident set before the model was built
+  double rssBeforeBytes = 0.0;   // resident set before the model was built
+  double anonBeforeBytes = 0.0;  // its anonymous part
 };
 
 // nx = ny = n, nz = 2.6 n cubes of 6 tets: 6 * 2.6 n^3 tets.
@@ -80,6 +105,7 @@ Model& model(int n, BlendMethod method) {
   const double rssBefore = currentRssBytes();
   auto m = std::make_unique<Model>();
   m->rssBeforeBytes = rssBefore;
+  m->anonBeforeBytes = anonymousRssBytes();
   const int nz = static_cast<int>(std::lround(2.6 * n));
   const double length = 2.6;
   {
@@ -125,6 +151,7 @@ void blendBenchmark(benchmark::State& state, BlendMethod method) {
   }
   const double perBlend = (blend + rhs + solve) / count;
   const double steadyRss = currentRssBytes();
+  const double steadyAnon = anonymousRssBytes();
   // Same run, outside the timed loop: vertex-linear and a refactored solve.
   BlendResult linear;
   const auto linearStart = Clock::now();
@@ -155,6 +182,7 @@ void blendBenchmark(benchmark::State& state, BlendMethod method) {
   state.counters["x_vertex_linear"] = perBlend / vertexLinear;
   state.counters["prepare_s"] = m.prepareSeconds;
   state.counters["rss_B_per_tet"] = (steadyRss - m.rssBeforeBytes) / tets;
+  state.counters["anon_B_per_tet"] = (steadyAnon - m.anonBeforeBytes) / tets;
   state.counters["maxrss_B_per_tet"] = peakRssBytes() / tets;
 }
 

@@ -53,19 +53,19 @@ int findRoot(std::vector<int>& parent, int v) {
   return v;
 }
 
-// vol_j D_rest,j^-T = cof(D_rest,j) / 6: its columns are the cross products
-// e2 x e3, e3 x e1, e1 x e2 of the rest edges, divided by 6 (D^-1 =
-// cof(D)^T / det D and vol = det D / 6), so the right-hand side needs no
-// stored inverse or volume per tet.
-Eigen::Matrix3d weightedInverseTranspose(const Vertices& vertices, const Eigen::RowVector4i& tet) {
+// 6 vol_j D_rest,j^-T = cof(D_rest,j): its columns are the cross products
+// e2 x e3, e3 x e1, e1 x e2 of the rest edges (D^-1 = cof(D)^T / det D and
+// vol = det D / 6), so the right-hand side needs no stored inverse or volume
+// per tet; the factor 1/6 is applied once per vertex.
+Eigen::Matrix3d cofactorMatrix(const Vertices& vertices, const Eigen::RowVector4i& tet) {
   const Eigen::Vector3d p0 = vertices.row(tet(0)).transpose();
   const Eigen::Vector3d e1 = vertices.row(tet(1)).transpose() - p0;
   const Eigen::Vector3d e2 = vertices.row(tet(2)).transpose() - p0;
   const Eigen::Vector3d e3 = vertices.row(tet(3)).transpose() - p0;
   Eigen::Matrix3d columns;
-  columns.col(0) = e2.cross(e3) / 6.0;
-  columns.col(1) = e3.cross(e1) / 6.0;
-  columns.col(2) = e1.cross(e2) / 6.0;
+  columns.col(0) = e2.cross(e3);
+  columns.col(1) = e3.cross(e1);
+  columns.col(2) = e1.cross(e2);
   return columns;
 }
 
@@ -156,7 +156,7 @@ struct StitchSolver::Impl {
   // rhs(r, :) = sum over the tets j of free vertex r (corner c) of
   // vol_j B_j g_c (Sumner-Popovic eq. 6's right-hand side), rows in reduced
   // order; row rowOf[r] receives free vertex r (identity when rowOf is empty).
-  // Each tet is visited once: C = vol_j B_j D_rest,j^-T holds vol_j B_j g_c
+  // Each tet is visited once: C = 6 vol_j B_j D_rest,j^-T holds 6 vol_j B_j g_c
   // for corners 1..3 in its columns, and corner 0 gets minus their sum. The
   // chunks of tets are summed in parallel, each sequentially into its own
   // vertex-range buffer, kTetMapChunk tets at a time: targets(begin, end,
@@ -182,7 +182,7 @@ struct StitchSolver::Impl {
         targetSeconds[c] += secondsSince(targetStart);
         for (int j = begin; j < end; ++j) {
           const Eigen::Matrix3d columns =
-              maps[j - begin] * weightedInverseTranspose(rest.vertices, rest.tets.row(j));
+              maps[j - begin] * cofactorMatrix(rest.vertices, rest.tets.row(j));
           sums.row(rest.tets(j, 0) - low) -= columns.rowwise().sum().transpose();
           for (int corner = 1; corner < 4; ++corner) {
             sums.row(rest.tets(j, corner) - low) += columns.col(corner - 1).transpose();
@@ -194,15 +194,25 @@ struct StitchSolver::Impl {
     const auto freeCount = static_cast<Eigen::Index>(freeVertices.size());
     tbb::parallel_for(tbb::blocked_range<Eigen::Index>(0, freeCount, 4096),
                       [&](const tbb::blocked_range<Eigen::Index>& range) {
+                        // freeVertices ascends: the chunks whose vertex range
+                        // meets this block's, in chunk order.
+                        const int first = freeVertices[range.begin()];
+                        const int last = freeVertices[range.end() - 1];
+                        int overlapping[kRhsChunks];
+                        int count = 0;
+                        for (int c = 0; c < kRhsChunks; ++c) {
+                          if (chunkLow[c] <= last && chunkHigh[c] > first) overlapping[count++] = c;
+                        }
                         for (Eigen::Index r = range.begin(); r != range.end(); ++r) {
                           const int v = freeVertices[r];
                           Eigen::RowVector3d sum = Eigen::RowVector3d::Zero();
-                          for (int c = 0; c < kRhsChunks; ++c) {
+                          for (int i = 0; i < count; ++i) {
+                            const int c = overlapping[i];
                             if (v >= chunkLow[c] && v < chunkHigh[c]) {
                               sum += buffer.row(chunkOffset[c] + v - chunkLow[c]);
                             }
                           }
-                          rhs.row(rowOf.empty() ? r : rowOf[r]) = sum;
+                          rhs.row(rowOf.empty() ? r : rowOf[r]) = sum / 6.0;
                         }
                       });
     double targetTotal = 0.0, chunkTotal = 0.0;
