@@ -43,5 +43,5 @@ TEST(TetGeometry, BoundingBoxDiagonal) {
   EXPECT_EQ(boundingBoxDiagonal(Vertices(0, 3)), 0.0);
 }
 
-} // namespace
-} // namespace tetblend
+}  // namespace
+}  // namespace tetblend
