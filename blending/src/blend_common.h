@@ -1,15 +1,13 @@
 #pragma once
 // Helpers shared by the blend-method families (private to tetblend_blending).
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-
 #include <Eigen/Core>
 #include <algorithm>
 #include <sstream>
 #include <string>
 #include <vector>
 
+#include "ordered_parallel.h"
 #include "tetblend/blending/blend_method.h"
 #include "tetblend/core/error.h"
 
@@ -19,27 +17,28 @@ namespace blend_detail {
 /// Tets per TBB task in the per-tet loops.
 constexpr int kTetGrain = kTetMapChunk;
 
-/// Runs body(j) for j in [0, count) in parallel; each j writes only its own
-/// outputs, so the result does not depend on the schedule.
-template <typename Body>
-void forEachTet(int count, const Body& body) {
-  tbb::parallel_for(tbb::blocked_range<int>(0, count, kTetGrain),
-                    [&](const tbb::blocked_range<int>& range) {
-                      for (int j = range.begin(); j != range.end(); ++j) body(j);
-                    });
-}
-
 /// Runs body(begin, end) in parallel on the fixed chunks [c kTetGrain,
 /// min((c + 1) kTetGrain, count)) covering [0, count); each chunk writes only
 /// its own tets' outputs. The chunk boundaries do not depend on the schedule,
 /// so a body may hand a chunk's contiguous parameters to a batched kernel
 /// (whose rounding may depend on an element's place in the batch) and still
-/// give the same result on every run.
+/// give the same result on every run; an exception is the first chunk's
+/// (parallelForFirstError).
 template <typename Body>
 void forEachTetChunk(int count, const Body& body) {
   const int chunks = (count + kTetGrain - 1) / kTetGrain;
-  tbb::parallel_for(0, chunks,
-                    [&](int c) { body(c * kTetGrain, std::min(count, (c + 1) * kTetGrain)); });
+  parallelForFirstError(chunks,
+                        [&](int c) { body(c * kTetGrain, std::min(count, (c + 1) * kTetGrain)); });
+}
+
+/// Runs body(j) for j in [0, count) in parallel, in order within each fixed
+/// chunk; each j writes only its own outputs, so neither the result nor the
+/// tet an exception names depends on the schedule.
+template <typename Body>
+void forEachTet(int count, const Body& body) {
+  forEachTetChunk(count, [&](int begin, int end) {
+    for (int j = begin; j < end; ++j) body(j);
+  });
 }
 
 /// Number of tets and examples of a BlendInput, after checking it is complete.

@@ -18,6 +18,7 @@
 #include <utility>
 #include <vector>
 
+#include "ordered_parallel.h"
 #include "tetblend/blending/stitch_solver.h"
 #include "tetblend/core/error.h"
 
@@ -175,7 +176,7 @@ struct StitchSolver::Impl {
     buffer.resize(chunkOffset[stitch_detail::kRhsChunks], 3);
     std::vector<double> targetSeconds(stitch_detail::kRhsChunks, 0.0),
         chunkSeconds(stitch_detail::kRhsChunks, 0.0);
-    tbb::parallel_for(0, stitch_detail::kRhsChunks, [&](int c) {
+    blend_detail::parallelForFirstError(stitch_detail::kRhsChunks, [&](int c) {
       const auto chunkStart = stitch_detail::Clock::now();
       auto sums = buffer.middleRows(chunkOffset[c], chunkHigh[c] - chunkLow[c]);
       sums.setZero();

@@ -8,9 +8,12 @@
 #include <random>
 
 #include "blending_test_support.h"
+#include "tetblend/blending/blend_method.h"
 #include "tetblend/blending/shape_blender.h"
+#include "tetblend/blending/tet_adjacency.h"
 #include "tetblend/blending/tet_maps.h"
 #include "tetblend/core/baselines.h"
+#include "tetblend/core/error.h"
 #include "tetblend/meshing/procedural_shapes.h"
 
 namespace tetblend {
@@ -77,6 +80,40 @@ TEST(PreparedBlend, PolarSlerpEqualsCorePolarSlerpBlendWithThreeExamples) {
   SCOPED_TRACE("seed " + std::to_string(seed));
   std::mt19937 rng(seed);
   expectPolarSlerpMatchesCore(3, rng);  // sign-aligned quaternion sum branch
+}
+
+// Preparation runs over fixed tet chunks in parallel; when several tets cannot
+// be parametrised, the error must name the first of them on every run, not
+// whichever chunk failed first in time. diag(-1, -2, 1) has det > 0 but two
+// distinct negative eigenvalues, so it has no real logarithm (alexa refuses
+// it). The bad tets sit in different 1024-tet chunks; 5200 opens the upper
+// half of the chunks, where a second thread starts, so it tends to fail first
+// in time (the run without the ordered rethrow named it in 20 of 20 runs).
+TEST(PreparedBlend, PreparationErrorNamesTheFirstBadTetWhateverTheSchedule) {
+  const TetMesh rest = boxTetMesh(12, 12, 12, Eigen::Vector3d::Ones());  // 10368 tets
+  const RestTetData restData = restTetData(rest);
+  const std::vector<Vertices> examples = {rest.vertices};
+  std::vector<std::vector<Eigen::Matrix3d>> gradients(
+      1, std::vector<Eigen::Matrix3d>(rest.tets.rows(), Eigen::Matrix3d::Identity()));
+  const Eigen::Matrix3d noRealLog = Eigen::Vector3d(-1.0, -2.0, 1.0).asDiagonal();
+  for (int bad : {9000, 5200, 4000}) gradients[0][static_cast<size_t>(bad)] = noRealLog;
+  const TetAdjacency adjacency = buildTetAdjacency(rest.tets);
+  const TetComponents components = tetComponents(adjacency);
+  BlendInput input;
+  input.rest = &rest;
+  input.restData = &restData;
+  input.examples = &examples;
+  input.gradients = &gradients;
+  input.adjacency = &adjacency;
+  input.components = &components;
+  for (int run = 0; run < 20; ++run) {
+    try {
+      prepareTetMapBlender(BlendMethod::kAlexa, input);
+      FAIL() << "alexa prepared a map without a real logarithm";
+    } catch (const DomainError& error) {
+      EXPECT_NE(std::string(error.what()).find("tet 4000:"), std::string::npos) << error.what();
+    }
+  }
 }
 
 }  // namespace
