@@ -27,7 +27,7 @@ class LinearBlender final : public TetMapBlender {
   BlendMethod method() const override { return BlendMethod::kLinear; }
   int tetCount() const override { return tets_; }
   int exampleCount() const override { return examples_; }
-  void blendRange(const std::vector<double>& weights, int begin, int end,
+  void blendChunk(const std::vector<double>& weights, int begin, int end,
                   Eigen::Matrix3d* out) const override {
     const double rest = restWeight(weights);
     for (int j = begin; j < end; ++j) {
@@ -71,7 +71,7 @@ class AlexaBlender final : public TetMapBlender {
   BlendMethod method() const override { return BlendMethod::kAlexa; }
   int tetCount() const override { return tets_; }
   int exampleCount() const override { return examples_; }
-  void blendRange(const std::vector<double>& weights, int begin, int end,
+  void blendChunk(const std::vector<double>& weights, int begin, int end,
                   Eigen::Matrix3d* out) const override {
     for (int j = begin; j < end; ++j) {
       Eigen::Matrix3d sum = Eigen::Matrix3d::Zero();
@@ -130,7 +130,7 @@ class PolarSlerpBlender final : public TetMapBlender {
   BlendMethod method() const override { return BlendMethod::kPolarSlerp; }
   int tetCount() const override { return tets_; }
   int exampleCount() const override { return examples_; }
-  void blendRange(const std::vector<double>& weights, int begin, int end,
+  void blendChunk(const std::vector<double>& weights, int begin, int end,
                   Eigen::Matrix3d* out) const override {
     const std::vector<double> all = blend_detail::withRestWeight(weights);
     // polarSlerpBlend's pivot: the map of largest |weight| (first on ties;

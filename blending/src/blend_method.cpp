@@ -99,12 +99,22 @@ std::unique_ptr<TetMapBlender> prepareTetMapBlender(BlendMethod method, const Bl
   throw InputError("blend method '" + blendMethodName(method) + "' is not available in this build");
 }
 
+void TetMapBlender::blendRange(const std::vector<double>& weights, int begin, int end,
+                               Eigen::Matrix3d* out) const {
+  checkWeights(weights, exampleCount());
+  if (begin < 0 || begin > end || end > tetCount()) {
+    throw InputError("blend: tet range [" + std::to_string(begin) + ", " + std::to_string(end) +
+                     ") is outside the " + std::to_string(tetCount()) + " tets");
+  }
+  blendChunk(weights, begin, end, out);
+}
+
 void TetMapBlender::blendTargets(const std::vector<double>& weights,
                                  std::vector<Eigen::Matrix3d>& targets) const {
   checkWeights(weights, exampleCount());
   targets.resize(tetCount());
   blend_detail::forEachTetChunk(tetCount(), [&](int begin, int end) {
-    blendRange(weights, begin, end, targets.data() + begin);
+    blendChunk(weights, begin, end, targets.data() + begin);
   });
 }
 

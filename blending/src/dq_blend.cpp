@@ -44,7 +44,7 @@ class DualQuaternionBlender final : public TetMapBlender {
   int tetCount() const override { return tets_; }
   int exampleCount() const override { return examples_; }
 
-  void blendRange(const std::vector<double>& weights, int begin, int end,
+  void blendChunk(const std::vector<double>& weights, int begin, int end,
                   Eigen::Matrix3d* out) const override {
     const std::vector<double> allWeights = blend_detail::withRestWeight(weights);
     std::vector<DualQuaternion> rotations(examples_ + 1);  // [0] is the rest

@@ -92,7 +92,7 @@ class KajiBlender final : public TetMapBlender {
   // The range (one fixed chunk of blendTargets) sums its parameters into one
   // contiguous array of blended logarithms (w, then Y's upper triangle:
   // phiLinearBatch's layout) and maps it through core's batched exponentials.
-  void blendRange(const std::vector<double>& weights, int begin, int end,
+  void blendChunk(const std::vector<double>& weights, int begin, int end,
                   Eigen::Matrix3d* out) const override {
     std::vector<double> logs(static_cast<size_t>(end - begin) * kParamsPerMap, 0.0);
     for (int j = begin; j < end; ++j) {
@@ -161,7 +161,7 @@ class KajiFrechetBlender final : public TetMapBlender {
   int tetCount() const override { return tets_; }
   int exampleCount() const override { return examples_; }
 
-  void blendRange(const std::vector<double>& weights, int begin, int end,
+  void blendChunk(const std::vector<double>& weights, int begin, int end,
                   Eigen::Matrix3d* out) const override {
     std::vector<Eigen::Matrix4d> transforms(examples_);
     for (int j = begin; j < end; ++j) {

@@ -72,7 +72,7 @@ class LieBodiesBlender final : public TetMapBlender {
   // The translation of E is irrelevant: the target uses only the edges.
   int tetCount() const override { return tets_; }
   int exampleCount() const override { return examples_; }
-  void blendRange(const std::vector<double>& weights, int begin, int end,
+  void blendChunk(const std::vector<double>& weights, int begin, int end,
                   Eigen::Matrix3d* out) const override {
     const Eigen::VectorXd w = Eigen::Map<const Eigen::VectorXd>(weights.data(), examples_);
     std::vector<LieBodyTangent> logs(examples_);

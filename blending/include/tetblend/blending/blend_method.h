@@ -76,13 +76,13 @@ class TetMapBlender {
   virtual int tetCount() const = 0;
   virtual int exampleCount() const = 0;
   /// Writes the target linear maps B_j (3 by 3) of tets j in [begin, end)
-  /// into out[0 .. end - begin) for `weights` (n finite reals, already
-  /// checked with checkWeights). Sequential; safe to call concurrently on
-  /// disjoint ranges. Throws DomainError naming the tet where the method
-  /// cannot blend these weights. Pass the chunks of kTetMapChunk for results
-  /// identical to blendTargets.
-  virtual void blendRange(const std::vector<double>& weights, int begin, int end,
-                          Eigen::Matrix3d* out) const = 0;
+  /// into out[0 .. end - begin) for `weights` (one per example, finite
+  /// reals). Sequential; safe to call concurrently on disjoint ranges. Throws
+  /// InputError for a wrong weight count or a range outside [0, #T], and
+  /// DomainError naming the tet where the method cannot blend these weights.
+  /// Pass the chunks of kTetMapChunk for results identical to blendTargets.
+  void blendRange(const std::vector<double>& weights, int begin, int end,
+                  Eigen::Matrix3d* out) const;
   /// Writes the #T target linear maps B_j (3 by 3) for `weights` (one per
   /// example, any reals) into `targets` (resized): blendRange on every chunk
   /// of kTetMapChunk tets, in parallel, deterministic. Throws InputError for a
@@ -90,6 +90,11 @@ class TetMapBlender {
   /// cannot blend these weights.
   void blendTargets(const std::vector<double>& weights,
                     std::vector<Eigen::Matrix3d>& targets) const;
+
+ protected:
+  /// blendRange after its checks: 0 <= begin <= end <= #T and n weights.
+  virtual void blendChunk(const std::vector<double>& weights, int begin, int end,
+                          Eigen::Matrix3d* out) const = 0;
 };
 
 /// Parametrises the examples of `input` once for `method` (all but
