@@ -52,6 +52,7 @@ SupernodalFactor::SupernodalFactor(Eigen::SparseMatrix<double>& lower) {
   common.nmethods = 2;
   common.method[0].ordering = CHOLMOD_METIS;
   common.method[1].ordering = CHOLMOD_AMD;
+  common.postorder = 1;  // findSplit needs each subtree to be a contiguous range
   cholmod_sparse view{};
   view.nrow = view.ncol = static_cast<size_t>(lower.rows());
   view.nzmax = static_cast<size_t>(lower.nonZeros());
@@ -230,7 +231,8 @@ void SupernodalFactor::solve(RowMatrix3& y, SupernodalWorkspace& workspace) cons
 // Chooses `top_`, `low_` and `split_`: from the last root, descend into the
 // largest child subtree while it holds more than 2/3 of the entries, then
 // splits top_'s child subtrees [low_, top_) at the boundary closest to half of
-// their entries. split_ = 0 (sequential) when no balanced split exists.
+// their entries. split_ = 0 (sequential) when the supernodes are not
+// postordered or top_ has fewer than two child subtrees.
 void SupernodalFactor::findSplit() {
   const auto nsuper = static_cast<int>(super_.size()) - 1;
   const int* super = super_.data();
@@ -241,11 +243,17 @@ void SupernodalFactor::findSplit() {
     first[s] = s;
     for (int c = super[s]; c < super[s + 1]; ++c) column[c] = s;
   }
+  std::vector<int> subtreeSize(nsuper, 1);
   for (int s = 0; s < nsuper; ++s) {
     if (rowStart_[s + 1] == rowStart_[s]) continue;
-    parent[s] = column[rows_[rowStart_[s]]];
-    if (parent[s] <= s) return;  // not postordered: stay sequential
+    parent[s] = column[rows_[rowStart_[s]]];  // > s in any elimination order
     first[parent[s]] = std::min(first[parent[s]], first[s]);
+    subtreeSize[parent[s]] += subtreeSize[s];
+  }
+  // The two halves solve concurrently only if every subtree is the range
+  // [first, s] (a postorder): otherwise they could share rows.
+  for (int s = 0; s < nsuper; ++s) {
+    if (subtreeSize[s] != s - first[s] + 1) return;
   }
   const auto entries = [&](int s) { return double(px[s + 1]) - px[first[s]]; };
   int node = nsuper - 1;
