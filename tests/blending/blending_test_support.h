@@ -2,6 +2,8 @@
 // Shared fixtures of the blending tests: the seed of the random tests and
 // small procedural examples.
 
+#include <gtest/gtest.h>
+
 #include <cstdlib>
 #include <iostream>
 #include <random>
@@ -11,12 +13,16 @@
 
 namespace tetblend::testing {
 
-/// Seed of the random tests: TETBLEND_SEED if set, else a fixed default. The
-/// caller prints it (SCOPED_TRACE) so that a failure can be replayed.
+/// Seed of the random tests: TETBLEND_SEED if set, else a fixed default.
+/// Printed with the running test's name, so a failure can be replayed.
 inline unsigned testSeed() {
   constexpr unsigned kDefaultSeed = 20240611u;
   const char* env = std::getenv("TETBLEND_SEED");
-  return env != nullptr ? static_cast<unsigned>(std::stoul(env)) : kDefaultSeed;
+  const unsigned seed = env != nullptr ? static_cast<unsigned>(std::stoul(env)) : kDefaultSeed;
+  const ::testing::TestInfo* test = ::testing::UnitTest::GetInstance()->current_test_info();
+  std::cout << "[ seed     ] " << (test != nullptr ? test->name() : "")
+            << ": TETBLEND_SEED=" << seed << "\n";
+  return seed;
 }
 
 /// A smooth non-affine deformation of `v` with amplitude `amplitude` (units

@@ -131,14 +131,14 @@ TEST(StitchSolver, BackendsAgree) {
 // panels on two threads; on this 14 x 14 x 36 bar (8325 vertices) METIS's
 // root separator is a 566-column supernode (measured), so the panel path,
 // the two-thread split of the elimination tree and the split off-diagonal
-// blocks all run.
+// blocks all run (with CHOLMOD, the default build; the property below holds
+// for every backend, so a build without CHOLMOD checks Eigen's factor here).
 TEST(StitchSolver, LargeSupernodesGiveTheLeastSquaresSolution) {
   const unsigned seed = testing::testSeed();
   SCOPED_TRACE("seed " + std::to_string(seed));
   std::mt19937 rng(seed);
   const TetMesh rest = boxTetMesh(14, 14, 36, Eigen::Vector3d(1.0, 1.0, 2.6));
   const StitchSolver solver(rest);
-  ASSERT_EQ(solver.backend(), StitchBackend::kCholmodSupernodal);
   // A compatible field is reproduced (same tolerance as the small grids: the
   // condition number of this Laplacian is still far below 1e6).
   const Vertices target = testing::smoothWarp(rest.vertices, 0.03, rng);

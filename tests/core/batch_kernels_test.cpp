@@ -250,7 +250,7 @@ TEST(BatchKernels, PhiPsiRoundTripByConditionBand) {
       const double scale = std::exp(test_seed::uniform(rng, -std::log(1e6), std::log(1e6)));
       Eigen::Matrix4d a = Eigen::Matrix4d::Identity();
       a.topLeftCorner<3, 3>() = core_test::randomMatrixWithCond(rng, cond, scale);
-      a.topRightCorner<3, 1>() = scale * Eigen::Vector3d::Random();
+      a.topRightCorner<3, 1>() = scale * core_test::randomUniform<3, 1>(rng);
       in.push_back(a);
       tol.push_back(cond <= 1e2   ? kRoundTripTolCond1e2
                     : cond <= 1e4 ? kRoundTripTolCond1e4

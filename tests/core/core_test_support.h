@@ -18,6 +18,13 @@ using test_seed::uniform;
 /// Seed of the random samples (test_seed::seedFor, default 20130703u).
 inline unsigned testSeed(const char* testName) { return test_seed::seedFor(testName, 20130703u); }
 
+/// Entries uniform in [-1, 1] drawn from rng (Eigen's Random() uses
+/// std::rand, which the printed seed does not reach).
+template <int Rows, int Cols>
+Eigen::Matrix<double, Rows, Cols> randomUniform(std::mt19937& rng) {
+  return Eigen::Matrix<double, Rows, Cols>::NullaryExpr([&] { return uniform(rng, -1.0, 1.0); });
+}
+
 inline Eigen::Vector3d randomUnitVector(std::mt19937& rng) {
   std::normal_distribution<double> n;
   Eigen::Vector3d v;

@@ -49,9 +49,9 @@ TEST(KajiOchiai, PhiMatchesMatrixFunctionsOracle) {
   std::mt19937 rng(testSeed("KajiOchiai.PhiMatchesMatrixFunctionsOracle"));
   for (int i = 0; i < 300; ++i) {
     AffineParams p;
-    p.translation = Eigen::Vector3d::Random();
+    p.translation = core_test::randomUniform<3, 1>(rng);
     p.rotationLog = uniform(rng, 0, 20) * randomUnitVector(rng);
-    Eigen::Matrix3d y = Eigen::Matrix3d::Random();
+    Eigen::Matrix3d y = core_test::randomUniform<3, 3>(rng);
     p.stretchLog = y + y.transpose();
     const Eigen::Matrix3d oracle = hat(p.rotationLog).exp() * p.stretchLog.exp();
     const Eigen::Matrix4d m = phi(p);
@@ -66,8 +66,8 @@ TEST(KajiOchiai, PhiPsiRoundTripByConditionBand) {
   for (double cond : {1.0, 10.0, 1e2, 1e3, 1e4, 1e6, 1e8}) {
     for (int i = 0; i < 200; ++i) {
       const double scale = std::exp(uniform(rng, -std::log(1e6), std::log(1e6)));
-      const Eigen::Matrix4d a =
-          affine(randomMatrixWithCond(rng, cond, scale), scale * Eigen::Vector3d::Random());
+      const Eigen::Matrix4d a = affine(randomMatrixWithCond(rng, cond, scale),
+                                       scale * core_test::randomUniform<3, 1>(rng));
       const AffineParams p = psi(a);
       const Eigen::Matrix4d back = phi(p);
       ASSERT_TRUE(back.allFinite()) << a;
@@ -114,9 +114,9 @@ TEST(KajiOchiai, PsiInvertsPhiOnPrincipalParameters) {
   std::mt19937 rng(testSeed("KajiOchiai.PsiInvertsPhiOnPrincipalParameters"));
   for (int i = 0; i < 300; ++i) {
     AffineParams p;
-    p.translation = Eigen::Vector3d::Random();
+    p.translation = core_test::randomUniform<3, 1>(rng);
     p.rotationLog = uniform(rng, 0, kPi - 1e-3) * randomUnitVector(rng);
-    Eigen::Matrix3d y = Eigen::Matrix3d::Random();
+    Eigen::Matrix3d y = core_test::randomUniform<3, 3>(rng);
     p.stretchLog = y + y.transpose();
     const AffineParams q = psi(phi(p));
     ASSERT_LE((q.rotationLog - p.rotationLog).norm(), kParamTol);
@@ -153,7 +153,7 @@ TEST(KajiOchiai, BlendInterpolatesTheExamples) {
   std::vector<AffineParams> params;
   std::vector<Eigen::Matrix4d> mats;
   for (int k = 0; k < 3; ++k) {
-    mats.push_back(affine(randomMatrixWithCond(rng, 10.0), Eigen::Vector3d::Random()));
+    mats.push_back(affine(randomMatrixWithCond(rng, 10.0), core_test::randomUniform<3, 1>(rng)));
     params.push_back(psi(mats.back()));
   }
   EXPECT_LE((kajiBlend({0, 0, 0}, params) - Eigen::Matrix4d::Identity()).norm(), 0.0);
@@ -167,10 +167,10 @@ TEST(KajiOchiai, BlendInterpolatesTheExamples) {
 
 /// Random matrix of the subgroup, and whether a matrix belongs to it.
 Eigen::Matrix4d randomInSubgroup(std::mt19937& rng, AffineSubgroup g) {
-  const Eigen::Vector3d t = Eigen::Vector3d::Random();
+  const Eigen::Vector3d t = core_test::randomUniform<3, 1>(rng);
   const Eigen::Matrix3d r = randomRotation(rng);
   const Eigen::Matrix3d s =
-      core_test::spdWithEigenvalues(rng, Eigen::Vector3d::Random().array().exp());
+      core_test::spdWithEigenvalues(rng, core_test::randomUniform<3, 1>(rng).array().exp());
   switch (g) {
     case AffineSubgroup::Translation:
       return affine(Eigen::Matrix3d::Identity(), t);
