@@ -133,13 +133,8 @@ class PolarSlerpBlender final : public TetMapBlender {
   void blendChunk(const std::vector<double>& weights, int begin, int end,
                   Eigen::Matrix3d* out) const override {
     const std::vector<double> all = blend_detail::withRestWeight(weights);
-    // polarSlerpBlend's pivot: the map of largest |weight| (first on ties;
-    // index 0 is the rest), the same for every tet.
-    int pivot = 0;
-    for (int i = 1; i <= examples_; ++i) {
-      if (std::abs(all[i]) > std::abs(all[pivot])) pivot = i;
-    }
-    const Eigen::Vector4d identity = Eigen::Quaterniond::Identity().coeffs();
+    std::vector<Eigen::Quaterniond> rotations(static_cast<size_t>(examples_) + 1,
+                                              Eigen::Quaterniond::Identity());
     for (int j = begin; j < end; ++j) {
       Eigen::Matrix3d stretch = all[0] * Eigen::Matrix3d::Identity();
       for (int k = 0; k < examples_; ++k) {
@@ -149,10 +144,12 @@ class PolarSlerpBlender final : public TetMapBlender {
             y[1], y[3], y[4],   //
             y[2], y[4], y[5];
         stretch += all[k + 1] * s;
+        rotations[static_cast<size_t>(k) + 1].coeffs() =
+            Eigen::Map<const Eigen::Vector4d>(param(j, k));
       }
       Eigen::Quaterniond rotation;
       try {
-        rotation = blendedRotation(all, pivot, identity, j);
+        rotation = polarSlerpRotation(all.data(), rotations.data(), rotations.size());
       } catch (const DomainError& error) {
         blend_detail::rethrowForTet("polar-slerp", -1, j, error);
       }
@@ -161,34 +158,6 @@ class PolarSlerpBlender final : public TetMapBlender {
   }
 
  private:
-  // Shoemake's slerp between the rest and the one example, or else the
-  // normalised sum of the quaternions sign-aligned with the pivot's.
-  Eigen::Quaterniond blendedRotation(const std::vector<double>& all, int pivot,
-                                     const Eigen::Vector4d& identity, int tet) const {
-    if (examples_ == 1) {
-      const double sum = all[0] + all[1];
-      if (sum == 0.0) {
-        throw DomainError("polarSlerpBlend: the two weights sum to 0; no slerp parameter");
-      }
-      return Eigen::Quaterniond::Identity().slerp(
-          all[1] / sum, Eigen::Quaterniond(Eigen::Map<const Eigen::Vector4d>(param(tet, 0))));
-    }
-    const Eigen::Vector4d pivotQ =
-        pivot == 0 ? identity : Eigen::Map<const Eigen::Vector4d>(param(tet, pivot - 1));
-    Eigen::Vector4d q = (identity.dot(pivotQ) < 0.0 ? -all[0] : all[0]) * identity;
-    for (int k = 0; k < examples_; ++k) {
-      const Eigen::Map<const Eigen::Vector4d> qk(param(tet, k));
-      q += (qk.dot(pivotQ) < 0.0 ? -all[k + 1] : all[k + 1]) * qk;
-    }
-    if (!(q.norm() > 0.0)) {
-      throw DomainError(
-          "polarSlerpBlend: the weighted quaternion sum is zero (cancelling weights); no "
-          "rotation to normalise");
-    }
-    Eigen::Quaterniond rotation;
-    rotation.coeffs() = q.normalized();
-    return rotation;
-  }
   const double* param(int tet, int example) const {
     return params_.data() + (static_cast<size_t>(tet) * examples_ + example) * kPolarParamsPerMap;
   }

@@ -111,36 +111,43 @@ Eigen::Matrix4d alexaBlend(const std::vector<double>& weights,
   return result;
 }
 
-Eigen::Matrix4d polarSlerpBlend(const std::vector<double>& weights,
-                                const std::vector<Eigen::Matrix4d>& maps) {
-  validate("polarSlerpBlend", weights, maps);
-  const PolarParts parts = polarParts(weights, maps);
-  Eigen::Quaterniond rotation;
-  if (maps.size() == 2) {
+Eigen::Quaterniond polarSlerpRotation(const double* weights, const Eigen::Quaterniond* rotations,
+                                      std::size_t n) {
+  if (n == 2) {
     const double sum = weights[0] + weights[1];
     if (sum == 0.0) {
       throw DomainError("polarSlerpBlend: the two weights sum to 0; no slerp parameter");
     }
-    rotation = Eigen::Quaterniond(parts.rotations[0])
-                   .slerp(weights[1] / sum, Eigen::Quaterniond(parts.rotations[1]));
-  } else {
-    std::size_t pivot = 0;
-    for (std::size_t i = 1; i < maps.size(); ++i) {
-      if (std::abs(weights[i]) > std::abs(weights[pivot])) pivot = i;
-    }
-    const Eigen::Vector4d pivotQ = Eigen::Quaterniond(parts.rotations[pivot]).coeffs();
-    Eigen::Vector4d q = Eigen::Vector4d::Zero();
-    for (std::size_t i = 0; i < maps.size(); ++i) {
-      const Eigen::Vector4d qi = Eigen::Quaterniond(parts.rotations[i]).coeffs();
-      q += (qi.dot(pivotQ) < 0.0 ? -weights[i] : weights[i]) * qi;
-    }
-    if (!(q.norm() > 0.0)) {
-      throw DomainError(
-          "polarSlerpBlend: the weighted quaternion sum is zero (cancelling "
-          "weights); no rotation to normalise");
-    }
-    rotation.coeffs() = q.normalized();
+    return rotations[0].slerp(weights[1] / sum, rotations[1]);
   }
+  std::size_t pivot = 0;
+  for (std::size_t i = 1; i < n; ++i) {
+    if (std::abs(weights[i]) > std::abs(weights[pivot])) pivot = i;
+  }
+  const Eigen::Vector4d pivotQ = rotations[pivot].coeffs();
+  Eigen::Vector4d q = Eigen::Vector4d::Zero();
+  for (std::size_t i = 0; i < n; ++i) {
+    const Eigen::Vector4d qi = rotations[i].coeffs();
+    q += (qi.dot(pivotQ) < 0.0 ? -weights[i] : weights[i]) * qi;
+  }
+  if (!(q.norm() > 0.0)) {
+    throw DomainError(
+        "polarSlerpBlend: the weighted quaternion sum is zero (cancelling "
+        "weights); no rotation to normalise");
+  }
+  Eigen::Quaterniond rotation;
+  rotation.coeffs() = q.normalized();
+  return rotation;
+}
+
+Eigen::Matrix4d polarSlerpBlend(const std::vector<double>& weights,
+                                const std::vector<Eigen::Matrix4d>& maps) {
+  validate("polarSlerpBlend", weights, maps);
+  const PolarParts parts = polarParts(weights, maps);
+  std::vector<Eigen::Quaterniond> rotations;
+  for (const Eigen::Matrix3d& r : parts.rotations) rotations.emplace_back(r);
+  const Eigen::Quaterniond rotation =
+      polarSlerpRotation(weights.data(), rotations.data(), rotations.size());
   return affine(rotation.toRotationMatrix() * parts.stretch, parts.translation);
 }
 

@@ -10,9 +10,11 @@
 // DomainError naming the map index on a bad last row, a non-finite entry or
 // det M_i <= 0.
 
+#include <cstddef>
 #include <vector>
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 
 namespace tetblend {
 
@@ -57,6 +59,13 @@ constexpr double kAlexaRealEigenTolerance = 1.4901161193847656e-08;
 /// w_0 + w_1 = 0 for n = 2.
 Eigen::Matrix4d polarSlerpBlend(const std::vector<double>& weights,
                                 const std::vector<Eigen::Matrix4d>& maps);
+
+/// The rotation part of polarSlerpBlend: the n unit quaternions `rotations`
+/// (weights[i] for rotations[i], both n long) blended by slerp for n = 2, else
+/// by the normalised sum sign-aligned with the quaternion of largest |w_i|
+/// (first on ties). DomainError as polarSlerpBlend.
+Eigen::Quaterniond polarSlerpRotation(const double* weights, const Eigen::Quaterniond* rotations,
+                                      std::size_t n);
 
 /// Log-rotation blend (Grassia 1998 exponential map, as used by Sumner et
 /// al. 2005 for deformation features): M_i = R_i S_i (polar decomposition),
