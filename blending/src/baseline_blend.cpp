@@ -116,14 +116,8 @@ class PolarSlerpBlender final : public TetMapBlender {
         double* p = param(j, k);
         Eigen::Map<Eigen::Vector4d> quaternion(p);
         quaternion = Eigen::Quaterniond(polar.rotation).coeffs();
-        const Eigen::Matrix3d stretch = 0.5 * (polar.stretch + polar.stretch.transpose());
-        double* y = p + kQuaternionSize;
-        y[0] = stretch(0, 0);
-        y[1] = stretch(0, 1);
-        y[2] = stretch(0, 2);
-        y[3] = stretch(1, 1);
-        y[4] = stretch(1, 2);
-        y[5] = stretch(2, 2);
+        blend_detail::packSymmetric(0.5 * (polar.stretch + polar.stretch.transpose()),
+                                    p + kQuaternionSize);
       });
     }
   }
@@ -138,12 +132,7 @@ class PolarSlerpBlender final : public TetMapBlender {
     for (int j = begin; j < end; ++j) {
       Eigen::Matrix3d stretch = all[0] * Eigen::Matrix3d::Identity();
       for (int k = 0; k < examples_; ++k) {
-        const double* y = param(j, k) + kQuaternionSize;
-        Eigen::Matrix3d s;
-        s << y[0], y[1], y[2],  //
-            y[1], y[3], y[4],   //
-            y[2], y[4], y[5];
-        stretch += all[k + 1] * s;
+        stretch += all[k + 1] * blend_detail::unpackSymmetric(param(j, k) + kQuaternionSize);
         rotations[static_cast<size_t>(k) + 1].coeffs() =
             Eigen::Map<const Eigen::Vector4d>(param(j, k));
       }

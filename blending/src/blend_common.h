@@ -55,6 +55,26 @@ inline double restWeight(const std::vector<double>& weights) {
   return 1.0 - sum;
 }
 
+/// Writes the upper triangle of symmetric `m` as (xx, xy, xz, yy, yz, zz)
+/// into out[0..6): the packed stretch layout of the prepared methods.
+inline void packSymmetric(const Eigen::Matrix3d& m, double* out) {
+  out[0] = m(0, 0);
+  out[1] = m(0, 1);
+  out[2] = m(0, 2);
+  out[3] = m(1, 1);
+  out[4] = m(1, 2);
+  out[5] = m(2, 2);
+}
+
+/// The symmetric matrix packed by packSymmetric.
+inline Eigen::Matrix3d unpackSymmetric(const double* y) {
+  Eigen::Matrix3d m;
+  m << y[0], y[1], y[2],  //
+      y[1], y[3], y[4],   //
+      y[2], y[4], y[5];
+  return m;
+}
+
 /// The 4 by 4 homogeneous matrix of a linear map (no translation).
 inline Eigen::Matrix4d homogeneous(const Eigen::Matrix3d& linear) {
   Eigen::Matrix4d a = Eigen::Matrix4d::Identity();

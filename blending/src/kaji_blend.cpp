@@ -40,14 +40,7 @@ class KajiBlender final : public TetMapBlender {
         forEachTet(tets_, [&](int j) {
           try {
             const AffineParams principal = psi(homogeneous(gradients[j]));
-            const Eigen::Matrix3d& y = principal.stretchLog;
-            double* p = param(j, k) + kStretchOffset;
-            p[0] = y(0, 0);
-            p[1] = y(0, 1);
-            p[2] = y(0, 2);
-            p[3] = y(1, 1);
-            p[4] = y(1, 2);
-            p[5] = y(2, 2);
+            blend_detail::packSymmetric(principal.stretchLog, param(j, k) + kStretchOffset);
             rotations[j] = so3Exp(principal.rotationLog);
           } catch (const DomainError& error) {
             blend_detail::rethrowForTet("kaji", k, j, error);
