@@ -34,7 +34,7 @@ void blendSeries(const ModelData& model, const BlendSettings& settings,
   for (std::size_t k = 0; k < model.examples.size(); ++k) csv << ",w" << k + 1;
   csv << "\n";
   for (const SeriesItem& item : items) {
-    const BlendedShape shape = blendShape(blender, item.weights, method);
+    const BlendedShape shape = blendShape(blender, model, item.weights, method);
     writeBlendResult((fs::path(dir) / (item.name + ".vtu")).string(), model, shape.vertices,
                      shape.cellData, formats);
     sets.push_back({item.time, item.name + ".vtu", 0});

@@ -30,6 +30,23 @@ bool parseOnOff(const std::string& value, const std::string& what) {
   throw InputError(what + ": '" + value + "' is neither on nor off");
 }
 
+TetMesh stitchedMesh(const ModelData& model) {
+  if (model.excludedTets.empty()) return model.rest;
+  TetMesh kept;
+  kept.vertices = model.rest.vertices;
+  kept.tets.resize(model.rest.tets.rows() - static_cast<Eigen::Index>(model.excludedTets.size()), 4);
+  Eigen::Index row = 0;
+  std::size_t next = 0;  // model.excludedTets is ascending
+  for (Eigen::Index t = 0; t < model.rest.tets.rows(); ++t) {
+    if (next < model.excludedTets.size() && model.excludedTets[next] == t) {
+      ++next;
+      continue;
+    }
+    kept.tets.row(row++) = model.rest.tets.row(t);
+  }
+  return kept;
+}
+
 ShapeBlender makeBlender(const ModelData& model, const std::vector<BlendMethod>& methods,
                          bool rotationConsistency, bool nonlinearStitch) {
   ShapeBlenderOptions options;
@@ -37,7 +54,7 @@ ShapeBlender makeBlender(const ModelData& model, const std::vector<BlendMethod>&
   options.rotationConsistency = rotationConsistency;
   options.nonlinearStitch = nonlinearStitch;
   options.keepTargets = true;  // the target_residual quality array needs the blended maps
-  return ShapeBlender(model.rest, model.examples, options);
+  return ShapeBlender(stitchedMesh(model), model.examples, options);
 }
 
 }  // namespace tetblend::cli

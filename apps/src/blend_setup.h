@@ -29,11 +29,18 @@ BlendMethod parseMethod(const std::string& name);
 /// Parses "on"/"off"; InputError otherwise.
 bool parseOnOff(const std::string& value, const std::string& what);
 
+/// The model's rest mesh without its excluded tets (the tets some example
+/// cannot embed): the mesh the blender parametrises and stitches. All
+/// vertices are kept, in order; a vertex left in no tet is blended linearly
+/// (its own stitch component, placed at its blended position).
+TetMesh stitchedMesh(const ModelData& model);
+
 /// A blender for `model` with `methods` prepared (parametrisation and the
 /// stitch factorisation happen here); `nonlinearStitch` runs the nonlinear
 /// stitch (nonlinear_stitch.h) after the linear one whenever that leaves
 /// inverted tets (not for vertex-linear, which has no per-tet maps). InputError/DomainError from
-/// the library name the example and tet at fault.
+/// the library name the example and tet at fault. The blender works on
+/// stitchedMesh(model): tet indices in its results are of that mesh.
 ShapeBlender makeBlender(const ModelData& model, const std::vector<BlendMethod>& methods,
                          bool rotationConsistency, bool nonlinearStitch);
 

@@ -1,6 +1,7 @@
 #include "blended_shape.h"
 
 #include <cmath>
+#include <limits>
 
 namespace tetblend::cli {
 
@@ -10,13 +11,38 @@ NamedArray cellArray(const std::string& name, const std::vector<double>& values)
   return NamedArray{name, 1, values};
 }
 
+// The blended maps of the stitched tets spread over all the model's tets, NaN
+// for the excluded ones (empty stays empty: no maps).
+std::vector<Eigen::Matrix3d> targetsOfAllTets(const ModelData& model,
+                                              const std::vector<Eigen::Matrix3d>& stitched) {
+  if (stitched.empty()) return {};
+  std::vector<Eigen::Matrix3d> all(static_cast<std::size_t>(model.rest.tets.rows()),
+                                   Eigen::Matrix3d::Constant(
+                                       std::numeric_limits<double>::quiet_NaN()));
+  std::size_t next = 0;  // model.excludedTets is ascending
+  std::size_t kept = 0;
+  for (std::size_t t = 0; t < all.size(); ++t) {
+    if (next < model.excludedTets.size() &&
+        model.excludedTets[next] == static_cast<int>(t)) {
+      ++next;
+      continue;
+    }
+    all[t] = stitched[kept++];
+  }
+  return all;
+}
+
 }  // namespace
 
-BlendedShape blendShape(const ShapeBlender& blender, const std::vector<double>& weights,
-                        BlendMethod method) {
+BlendedShape blendShape(const ShapeBlender& blender, const ModelData& model,
+                        const std::vector<double>& weights, BlendMethod method) {
   BlendResult result = blender.blend(weights, method);
+  const bool excludes = !model.excludedTets.empty();
   const TetQuality q =
-      tetQuality(blender.rest(), blender.stitch().restData(), result.vertices, result.targets);
+      excludes ? tetQuality(model.rest, restTetData(model.rest), result.vertices,
+                            targetsOfAllTets(model, result.targets))
+               : tetQuality(blender.rest(), blender.stitch().restData(), result.vertices,
+                            result.targets);
   BlendedShape shape;
   shape.quality = summarizeQuality(q);
   shape.cellData.push_back(cellArray("volume_ratio", q.volumeRatio));
@@ -26,6 +52,11 @@ BlendedShape blendShape(const ShapeBlender& blender, const std::vector<double>& 
   shape.cellData.push_back(cellArray("rotation_angle", q.rotationAngle));
   if (!result.targets.empty())
     shape.cellData.push_back(cellArray("target_residual", q.stitchResidual));
+  if (excludes) {
+    std::vector<double> excluded(static_cast<std::size_t>(model.rest.tets.rows()), 0.0);
+    for (int t : model.excludedTets) excluded[static_cast<std::size_t>(t)] = 1.0;
+    shape.cellData.push_back(cellArray("excluded", excluded));
+  }
   shape.vertices = std::move(result.vertices);
   return shape;
 }

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <sstream>
 #include <thread>
@@ -115,6 +116,14 @@ std::string formatNumber(double value) {
   char buffer[32];
   const auto [end, ec] = std::to_chars(buffer, buffer + sizeof buffer, value);
   return ec == std::errc() ? std::string(buffer, end) : std::string("nan");
+}
+
+void printWarning(const std::string& line) {
+  std::fprintf(stderr, "tetblend: warning: %s\n", line.c_str());
+}
+
+void printNote(const std::string& line, bool quiet) {
+  if (!quiet) std::fprintf(stderr, "tetblend: %s\n", line.c_str());
 }
 
 }  // namespace tetblend::cli

@@ -52,6 +52,12 @@ class ThreadLimit {
 /// Number of worker threads to use for `threads` (0 = hardware concurrency).
 int resolveThreads(int threads);
 
+/// Prints "tetblend: warning: <line>" on stderr (always, --quiet or not).
+void printWarning(const std::string& line);
+
+/// Prints "tetblend: <line>" on stderr unless `quiet`.
+void printNote(const std::string& line, bool quiet);
+
 /// Formats a double in shortest round-trip form (for names and tables).
 std::string formatNumber(double value);
 

@@ -232,7 +232,7 @@ void runBatch(const BatchArgs& a) {
           BlendedShape shape;
           {
             std::lock_guard<std::mutex> lock(blendMutex);
-            shape = blendShape(*blender, weights, parseMethod(job.method));
+            shape = blendShape(*blender, model, weights, parseMethod(job.method));
           }
           writeBlendResult(o.files.front(), model, shape.vertices, shape.cellData, formats);
           o.quality = shape.quality;

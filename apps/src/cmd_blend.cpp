@@ -40,14 +40,16 @@ void runBlend(const BlendArgs& a) {
   const std::vector<std::string> formats = parseSurfaceFormats(a.blend.surfaceFormats);
   const ThreadLimit limit(a.prepare.threads);
 
+  PrepareMessages messages;
+  messages.warning = printWarning;
   const ModelData model =
-      fromModel ? readModelFile(a.model) : prepareModel(a.rest, a.examples, a.prepare);
+      fromModel ? readModelFile(a.model) : prepareModel(a.rest, a.examples, a.prepare, messages);
   requireWeightCount(weights, model.examples.size(), "--weights");
   ProgressBar progress("blend", 3, a.prepare.quiet);
   const ShapeBlender blender = makeBlender(
       model, {method}, parseOnOff(a.blend.consistency, "--consistency"), a.blend.nonlinear);
   progress.advance();
-  const BlendedShape shape = blendShape(blender, weights, method);
+  const BlendedShape shape = blendShape(blender, model, weights, method);
   progress.advance();
   writeBlendResult(a.output, model, shape.vertices, shape.cellData, formats);
   progress.advance();

@@ -1,6 +1,7 @@
 // tetblend inspect: what a surface, tet mesh or model file is (counts,
 // bounding box), its validation problems and its quality figures, on stdout.
 
+#include <algorithm>
 #include <cstdio>
 #include <fstream>
 #include <memory>
@@ -88,6 +89,15 @@ void inspectModel(const std::string& path) {
               static_cast<long long>(m.surfaceTriangles.rows()));
   printBox(m.rest.vertices);
   printTetQuality(m.rest);
+  if (!m.excludedTets.empty()) {
+    // Tets some example cannot embed (its surface folds or intersects itself).
+    constexpr std::size_t kListed = 20;
+    std::printf("  excluded from the stitch: %zu tets (", m.excludedTets.size());
+    for (std::size_t i = 0; i < std::min(kListed, m.excludedTets.size()); ++i) {
+      std::printf("%s%d", i > 0 ? ", " : "", m.excludedTets[i]);
+    }
+    std::printf("%s)\n", m.excludedTets.size() > kListed ? ", ..." : "");
+  }
   for (std::size_t k = 0; k < m.examples.size(); ++k) {
     const std::string label = "example " + std::to_string(k + 1) + " (" + m.exampleSources[k] + ")";
     printVolumeRatios(label.c_str(), m.rest.vertices, m.examples[k], m.rest.tets);

@@ -21,7 +21,10 @@ struct PrepareArgs {
 
 void runPrepare(const PrepareArgs& a) {
   const ThreadLimit limit(a.settings.threads);
-  const ModelData model = prepareModel(a.rest, a.examples, a.settings);
+  PrepareMessages messages;
+  messages.warning = printWarning;
+  messages.note = [&](const std::string& line) { printNote(line, a.settings.quiet); };
+  const ModelData model = prepareModel(a.rest, a.examples, a.settings, messages);
   writeModelFile(a.output, model);
 }
 

@@ -6,6 +6,7 @@
 #include <memory>
 
 #include "blend_series.h"
+#include "blend_setup.h"
 #include "cli_common.h"
 #include "commands.h"
 #include "parameter_pca.h"
@@ -42,8 +43,9 @@ std::vector<SeriesItem> pcaItems(const ModelData& model, const VariationsArgs& a
   if (!(a.range > 0.0)) throw InputError("--range must be > 0");
   const bool consistent = parseOnOff(a.blend.consistency, "--consistency");
   std::vector<Eigen::VectorXd> params;
+  const TetMesh stitched = stitchedMesh(model);  // excluded tets have no parameters
   for (const Vertices& e : model.examples)
-    params.push_back(kajiParameterVector(model.rest, e, consistent));
+    params.push_back(kajiParameterVector(stitched, e, consistent));
   const ParameterPca pca = parameterPca(params);
   std::vector<SeriesItem> items;
   const auto toStd = [](const Eigen::VectorXd& v) {

@@ -8,6 +8,9 @@
 //                                                   its middle joint by dual-quaternion
 //                                                   and by linear-blend skinning
 //                                                   (Kavan et al. §4: LBS collapses)
+//   limb_lbs170.obj                                 the limb bent 170 degrees by LBS: its
+//                                                   elbow folds into itself (a pose whose
+//                                                   surface intersects itself)
 // Every example shares the triangles of its rest surface (boundary of a
 // procedural tet mesh, interior vertices dropped).
 
@@ -74,6 +77,11 @@ void makeLimb(const std::string& dir) {
   write(dir, "limb_rest.obj", rest, rest.vertices);
   write(dir, "limb_dqs.obj", rest, tetblend::dualQuaternionSkinning(rest.vertices, weights, bones));
   write(dir, "limb_lbs.obj", rest, tetblend::linearBlendSkinning(rest.vertices, weights, bones));
+  const std::vector<Eigen::Isometry3d> folded{
+      Eigen::Isometry3d::Identity(),
+      tetblend::rotationAboutLine(joint, Eigen::Vector3d::UnitZ(), 170 * kPi / 180)};
+  write(dir, "limb_lbs170.obj", rest,
+        tetblend::linearBlendSkinning(rest.vertices, weights, folded));
 }
 
 }  // namespace

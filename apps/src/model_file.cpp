@@ -121,10 +121,13 @@ std::vector<unsigned char> encodePayload(const ModelData& m) {
   for (const Vertices& e : m.examples) writeVertices(w, e);
   w.text(m.restSource);
   for (const std::string& s : m.exampleSources) w.text(s);
+  w.u64(m.excludedTets.size());
+  for (int t : m.excludedTets) w.i32(t);
   return std::move(w.bytes());
 }
 
-ModelData decodePayload(const unsigned char* data, std::size_t size, const std::string& path) {
+ModelData decodePayload(const unsigned char* data, std::size_t size, const std::string& path,
+                        std::uint32_t version) {
   ByteReader r(data, size, path);
   const std::uint64_t nv = r.count("vertex count");
   const std::uint64_t nt = r.count("tet count");
@@ -143,6 +146,14 @@ ModelData decodePayload(const unsigned char* data, std::size_t size, const std::
   for (std::uint64_t k = 0; k < ne; ++k) m.examples.push_back(readVertices(r, nv));
   m.restSource = r.text();
   for (std::uint64_t k = 0; k < ne; ++k) m.exampleSources.push_back(r.text());
+  if (version >= 2) {
+    const std::uint64_t nx = r.count("excluded tet count");
+    if (nx > nt) {
+      throw InputError(path + ": damaged model file (" + std::to_string(nx) +
+                       " excluded tets of " + std::to_string(nt) + "); re-run 'tetblend prepare'");
+    }
+    for (std::uint64_t i = 0; i < nx; ++i) m.excludedTets.push_back(r.i32());
+  }
   if (!r.atEnd()) {
     throw InputError(path +
                      ": damaged model file (bytes after the payload); re-run 'tetblend prepare'");
@@ -187,6 +198,13 @@ void checkModel(const ModelData& m, const std::string& what) {
     throw InputError(what + ": " + std::to_string(m.examples.size()) + " examples but " +
                      std::to_string(m.exampleSources.size()) + " source names");
   }
+  for (std::size_t i = 0; i < m.excludedTets.size(); ++i) {
+    const int t = m.excludedTets[i];
+    if (t < 0 || t >= m.rest.tets.rows() || (i > 0 && t <= m.excludedTets[i - 1])) {
+      throw InputError(what + ": excluded tet " + std::to_string(t) +
+                       " is out of range or out of order; re-run 'tetblend prepare'");
+    }
+  }
   for (std::size_t k = 0; k < m.examples.size(); ++k)
     if (m.examples[k].rows() != nv)
       throw InputError(what + ": example " + std::to_string(k + 1) + " has " +
@@ -223,9 +241,9 @@ ModelData readModelFile(const std::string& path) {
     throw InputError(path + ": damaged model file (truncated header); re-run 'tetblend prepare'");
   }
   const auto version = static_cast<std::uint32_t>(readLittle(bytes, 8, 4));
-  if (version != kModelFormatVersion) {
+  if (version < 1 || version > kModelFormatVersion) {
     throw InputError(path + ": model file format version " + std::to_string(version) +
-                     ", this tetblend reads version " + std::to_string(kModelFormatVersion) +
+                     ", this tetblend reads versions 1 to " + std::to_string(kModelFormatVersion) +
                      "; re-run 'tetblend prepare' with this version");
   }
   const std::uint64_t payloadSize = readLittle(bytes, 12, 8);
@@ -238,7 +256,7 @@ ModelData readModelFile(const std::string& path) {
   if (fnv1a64(payload, payloadSize) != stored) {
     throw InputError(path + ": damaged model file (checksum mismatch); re-run 'tetblend prepare'");
   }
-  ModelData model = decodePayload(payload, payloadSize, path);
+  ModelData model = decodePayload(payload, payloadSize, path, version);
   checkModel(model, path);
   return model;
 }

@@ -12,7 +12,8 @@
 //   payload:  u64 #V, #T, #F, surface vertex count, #examples;
 //             rest vertices (#V*3 f64), tets (#T*4 i32), surface triangles
 //             (#F*3 i32); per example: vertices (#V*3 f64);
-//             rest source name, then one per example (u64 length + bytes)
+//             rest source name, then one per example (u64 length + bytes);
+//             version 2 on: u64 #X excluded tets, then #X i32 tet indices
 //   u64       FNV-1a 64 hash of the payload bytes
 // A file with another magic, another version, a wrong size or a wrong hash is
 // refused with an InputError that says which and what to do.
@@ -26,8 +27,9 @@
 
 namespace tetblend::cli {
 
-/// Version of the layout above; bump on any change of the payload.
-constexpr std::uint32_t kModelFormatVersion = 1;
+/// Version of the layout above; bump on any change of the payload. Version 1
+/// files (no excluded tets) are still read.
+constexpr std::uint32_t kModelFormatVersion = 2;
 
 /// What a model file holds.
 struct ModelData {
@@ -37,6 +39,9 @@ struct ModelData {
   std::vector<Vertices> examples;           ///< per example, #V by 3 positions (rest order)
   std::string restSource;                   ///< file the rest surface came from
   std::vector<std::string> exampleSources;  ///< one per example
+  /// Tets (ascending, distinct) that some example inverts because its surface
+  /// folds or intersects itself: left out of the stitch energy of every blend.
+  std::vector<int> excludedTets;
 };
 
 /// FNV-1a 64-bit hash of `size` bytes, continuing from `hash`.

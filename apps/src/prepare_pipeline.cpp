@@ -1,11 +1,15 @@
 #include "prepare_pipeline.h"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "cli_common.h"
 #include "progress.h"
 #include "tetblend/core/error.h"
-#include "tetblend/meshing/compatible_tets.h"
+#include "tetblend/core/tet_geometry.h"
+#include "tetblend/meshing/example_aware_tets.h"
+#include "tetblend/meshing/self_intersection.h"
 #include "tetblend/meshing/surface_io.h"
 #include "tetblend/meshing/surface_validation.h"
 #include "tetblend/meshing/tetgen_mesher.h"
@@ -14,19 +18,42 @@
 namespace tetblend::cli {
 namespace {
 
-/// Volume of a regular tetrahedron whose edge is the mean edge length of the
-/// triangles of `surface` (each edge counted once per face): a^3 / (6 sqrt 2).
-double autoMaxTetVolume(const SurfaceMesh& surface) {
-  double total = 0.0;
-  for (Eigen::Index f = 0; f < surface.triangles.rows(); ++f) {
-    for (int c = 0; c < 3; ++c) {
-      total += (surface.vertices.row(surface.triangles(f, c)) -
-                surface.vertices.row(surface.triangles(f, (c + 1) % 3)))
-                   .norm();
-    }
+void say(const std::function<void(const std::string&)>& sink, const std::string& line) {
+  if (sink) sink(line);
+}
+
+// "1.34 M" / "134 k" / "950": a tet count people read at a glance.
+std::string roughCount(long long n) {
+  if (n >= 1000000) return formatNumber(std::round(n / 1e4) / 100) + " M";
+  if (n >= 10000) return formatNumber(std::round(n / 1e3)) + " k";
+  return std::to_string(n);
+}
+
+std::string threeDigits(double value) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.3g", value);
+  return buffer;
+}
+
+// Why example `path`'s tets cannot be embedded, in words: its surface
+// intersects itself (how many face pairs, the first), or it does not.
+std::string surfaceDiagnosis(const SurfaceMesh& example) {
+  const SelfIntersections found = findSelfIntersections(example.vertices, example.triangles, 1);
+  if (found.pairCount == 0) return "its surface does not intersect itself but folds too tightly";
+  return "its surface intersects itself at " + std::to_string(found.pairCount) +
+         " face pair" + (found.pairCount > 1 ? "s" : "") + ", first faces " +
+         std::to_string(found.pairs.front().first) + " and " +
+         std::to_string(found.pairs.front().second);
+}
+
+// Smallest signed volume ratio (example / rest) over the listed tets.
+double worstVolumeRatio(const TetMesh& rest, const CompatibleTetResult& placed) {
+  double worst = INFINITY;
+  for (std::size_t i = 0; i < placed.invertedTets.size(); ++i) {
+    const double restVolume = tetSignedVolume(rest.vertices, rest.tets.row(placed.invertedTets[i]));
+    worst = std::min(worst, placed.invertedVolumes[i] / restVolume);
   }
-  const double edge = total / (3.0 * static_cast<double>(surface.triangles.rows()));
-  return edge * edge * edge / (6.0 * std::sqrt(2.0));
+  return worst;
 }
 
 }  // namespace
@@ -39,17 +66,22 @@ void addPrepareOptions(CLI::App& command, PrepareSettings& settings) {
       ->capture_default_str();
   command
       .add_option("--max-volume", settings.maxVolume,
-                  "TetGen volume bound per tet, in mesh units cubed (0 = none; default: auto, "
-                  "a regular tet whose edge is the rest surface's mean edge length)")
+                  "TetGen volume bound per tet, in mesh units cubed (default: none; the quality "
+                  "bound grades the interior from the surface inwards, and the examples refine "
+                  "it where they need it)")
       ->check(CLI::NonNegativeNumber);
   command.add_flag("--tetrise", settings.tetrise,
                    "one tet per surface triangle (apex along the normal) instead of TetGen: for "
                    "open or non-watertight surfaces (default: off)");
+  command.add_flag("--strict", settings.strict,
+                   "refuse an example whose surface folds or intersects itself so that some tets "
+                   "cannot be embedded (default: off; such tets are reported and left out of the "
+                   "stitch)");
   addThreadsOption(command, settings.threads);
 }
 
 ModelData prepareModel(const std::string& restPath, const std::vector<std::string>& examplePaths,
-                       const PrepareSettings& settings) {
+                       const PrepareSettings& settings, const PrepareMessages& messages) {
   if (examplePaths.empty()) throw InputError("give at least one example surface");
   if (settings.radiusEdgeRatio != 0.0 && !(settings.radiusEdgeRatio > 1.0)) {
     throw InputError("--quality must be 0 or greater than 1, got " +
@@ -81,22 +113,51 @@ ModelData prepareModel(const std::string& restPath, const std::vector<std::strin
   }
   TetGenOptions tetgen;
   tetgen.maxRadiusEdgeRatio = settings.radiusEdgeRatio;
-  tetgen.maxTetVolume = settings.maxVolume ? *settings.maxVolume : autoMaxTetVolume(rest);
-  model.rest = tetrahedralize(rest, tetgen);
+  tetgen.maxTetVolume = settings.maxVolume.value_or(0.0);
+  tetgen.sourceName = restPath;
+  const TetMesh tets = tetrahedralize(rest, tetgen);
   progress.advance();
-  const CompatibleTetBuilder builder(model.rest, model.surfaceVertexCount);
+  if (tets.tets.rows() > kLargeMeshWarningTets) {
+    say(messages.warning,
+        restPath + ": " + roughCount(tets.tets.rows()) + " tets; preparing and each blend need " +
+            "about " + formatNumber(std::round(tets.tets.rows() / 1e5) / 10) +
+            " GB of memory (a coarser mesh: a larger --quality, e.g. 3)");
+  }
+  std::vector<Vertices> surfaces;
+  for (const SurfaceMesh& example : examples) surfaces.push_back(example.vertices);
+  CompatibleTetMeshes built = buildCompatibleTetMeshes(
+      tets, model.surfaceVertexCount, surfaces, ExampleAwareOptions{},
+      [&](const char* stage) {
+        if (std::string(stage) == "place") progress.advance();
+      });
+  model.rest = std::move(built.rest);
   for (std::size_t k = 0; k < examples.size(); ++k) {
-    CompatibleTetResult placed = builder.place(examples[k].vertices);
+    CompatibleTetResult& placed = built.examples[k];
     if (!placed.invertedTets.empty()) {
-      throw InputError(examplePaths[k] + ": " + std::to_string(placed.invertedTets.size()) +
-                       " tets stay inverted after placing the interior vertices (first: tet " +
-                       std::to_string(placed.invertedTets.front()) + ", signed volume " +
-                       formatNumber(placed.invertedVolumes.front()) +
-                       "); try a finer rest mesh (--max-volume) or --tetrise");
+      const std::string what =
+          examplePaths[k] + ": " + std::to_string(placed.invertedTets.size()) +
+          " tets cannot be embedded (worst volume ratio " +
+          threeDigits(worstVolumeRatio(model.rest, placed)) + ", first tet " +
+          std::to_string(placed.invertedTets.front()) + "); " + surfaceDiagnosis(examples[k]);
+      if (settings.strict) {
+        throw InputError(what + ": repair the pose, or leave out --strict to exclude those "
+                                "tets from the stitch");
+      }
+      say(messages.warning, what + ": they are left out of the stitch of every blend");
+      model.excludedTets.insert(model.excludedTets.end(), placed.invertedTets.begin(),
+                                placed.invertedTets.end());
     }
     model.examples.push_back(std::move(placed.vertices));
-    progress.advance();
   }
+  std::sort(model.excludedTets.begin(), model.excludedTets.end());
+  model.excludedTets.erase(std::unique(model.excludedTets.begin(), model.excludedTets.end()),
+                           model.excludedTets.end());
+  say(messages.note, restPath + ": " + roughCount(model.rest.tets.rows()) + " tets, " +
+                         std::to_string(model.rest.vertices.rows()) + " vertices (" +
+                         std::to_string(built.steinerPoints) +
+                         " Steiner points added for the examples in " +
+                         std::to_string(built.rounds) + " rounds; " +
+                         std::to_string(model.excludedTets.size()) + " tets excluded)");
   return model;
 }
 

@@ -6,6 +6,7 @@
 // (which blends it directly).
 
 #include <CLI/CLI.hpp>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -17,23 +18,44 @@ namespace tetblend::cli {
 /// The meshing options of prepare, with their command-line defaults.
 struct PrepareSettings {
   double radiusEdgeRatio = 2.0;  ///< TetGen quality bound (-q), > 1
-  /// TetGen volume bound (-a), mesh units³; 0 = none; unset = auto: the
-  /// volume of a regular tet whose edge is the rest surface's mean edge
-  /// length, so the interior is as fine as the surface (a 4 pi twist or a
-  /// 180-degree bend needs interior points; TetGen's quality bound alone adds
-  /// few when the surface is already fine).
+  /// TetGen volume bound (-a), mesh units³; unset or 0 = none: the quality
+  /// bound alone grades the interior from the surface's own edge lengths
+  /// inwards, and the examples refine it where they need it
+  /// (example_aware_tets.h).
   std::optional<double> maxVolume;
   bool tetrise = false;          ///< per-face tetrisation instead of TetGen
+  /// Refuse examples with tets that cannot be embedded (default: report them
+  /// and leave them out of the stitch).
+  bool strict = false;
   int threads = 0;               ///< worker threads; 0 = all cores
   bool quiet = false;            ///< no progress bar
 };
 
-/// Adds --quality, --max-volume, --tetrise and --threads to `command`.
+/// Where prepareModel's messages go, one line each (no prefix, no newline).
+struct PrepareMessages {
+  /// Something the user must know: excluded tets, a mesh that will need
+  /// gigabytes.
+  std::function<void(const std::string&)> warning;
+  /// What was done: tet count, Steiner points added.
+  std::function<void(const std::string&)> note;
+};
+
+/// Rest meshes above this many tets get a memory warning before the
+/// examples are placed: preparing and each blend hold about 1 KB per tet
+/// (README, Benchmarks), so this is where a run starts to need gigabytes.
+constexpr long long kLargeMeshWarningTets = 1000000;
+
+/// Adds --quality, --max-volume, --tetrise, --strict and --threads to `command`.
 void addPrepareOptions(CLI::App& command, PrepareSettings& settings);
 
 /// Builds the model of `restPath` and `examplePaths` (surface files with the
-/// same triangles). Throws InputError naming the file and the problem.
+/// same triangles). Tets that an example inverts whatever the placement (its
+/// surface folds or intersects itself) become the model's excluded tets, with
+/// one warning per such example; settings.strict refuses them instead.
+/// A rest mesh above kLargeMeshWarningTets is warned about before the long
+/// steps start; a note gives the tet count and the Steiner points added. Throws InputError naming the file and the
+/// problem.
 ModelData prepareModel(const std::string& restPath, const std::vector<std::string>& examplePaths,
-                       const PrepareSettings& settings);
+                       const PrepareSettings& settings, const PrepareMessages& messages = {});
 
 }  // namespace tetblend::cli

@@ -3,8 +3,51 @@
 #include <algorithm>
 #include <array>
 #include <queue>
+#include <utility>
 
 namespace tetblend {
+namespace {
+
+// Links each tet that has no face neighbour to every tet it shares an edge
+// with (both directions, no duplicates).
+void linkFacelessTetsThroughEdges(const Tets& tets, TetAdjacency& adjacency) {
+  const int count = static_cast<int>(tets.rows());
+  std::vector<char> faceless(static_cast<size_t>(count), 0);
+  bool any = false;
+  for (int t = 0; t < count; ++t) {
+    faceless[static_cast<size_t>(t)] = adjacency.neighbours[static_cast<size_t>(t)].empty();
+    any = any || faceless[static_cast<size_t>(t)];
+  }
+  if (!any) return;
+  std::vector<std::pair<std::array<int, 2>, int>> edges;  // (sorted corners, tet)
+  edges.reserve(6 * static_cast<size_t>(count));
+  for (int t = 0; t < count; ++t) {
+    for (int a = 0; a < 4; ++a) {
+      for (int b = a + 1; b < 4; ++b) {
+        edges.push_back({{std::min(tets(t, a), tets(t, b)), std::max(tets(t, a), tets(t, b))}, t});
+      }
+    }
+  }
+  std::sort(edges.begin(), edges.end());
+  for (size_t i = 0; i < edges.size();) {
+    size_t j = i;
+    while (j < edges.size() && edges[j].first == edges[i].first) ++j;
+    for (size_t p = i; p < j; ++p) {
+      for (size_t q = i; q < j; ++q) {
+        const int from = edges[p].second;
+        const int to = edges[q].second;
+        if (from == to || (!faceless[static_cast<size_t>(from)] && !faceless[static_cast<size_t>(to)])) {
+          continue;
+        }
+        std::vector<int>& list = adjacency.neighbours[static_cast<size_t>(from)];
+        if (std::find(list.begin(), list.end(), to) == list.end()) list.push_back(to);
+      }
+    }
+    i = j;
+  }
+}
+
+}  // namespace
 
 TetAdjacency buildTetAdjacency(const Tets& tets) {
   // Each face as (sorted corner indices, owning tet); equal neighbours in the
@@ -37,6 +80,7 @@ TetAdjacency buildTetAdjacency(const Tets& tets) {
       adjacency.neighbours[faces[i + 1].tet].push_back(faces[i].tet);
     }
   }
+  linkFacelessTetsThroughEdges(tets, adjacency);
   return adjacency;
 }
 

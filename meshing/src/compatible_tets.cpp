@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <mutex>
 #include <numeric>
 #include <string>
 #include <utility>
@@ -91,9 +92,34 @@ struct CompatibleTetBuilder::Impl {
 #else
   Eigen::SimplicialLDLT<SparseMatrix> solver;
 #endif
+  std::once_flag factorOnce;
   double diagonal = 0.0;
   double totalVolume = 0.0;  // Σ_t vol_t
   VertexStars stars;
+
+  // Assembles K_II and K_IB and factors K_II, once, on first use.
+  void requireFactor() {
+    std::call_once(factorOnce, [this] {
+      StiffnessBlocks blocks = assembleStiffnessBlocks(rest.tets, elements, stars, surfaceCount);
+      couplingBlock = std::move(blocks.coupling);
+      if (interiorCount > 0) {
+        solver.compute(blocks.interiorLower);
+        if (solver.info() != Eigen::Success) {
+          throw NumericalError(
+              "CompatibleTetBuilder: Cholesky factorisation of the interior stiffness block "
+              "failed (an interior vertex used by no tet?)");
+        }
+      }
+    });
+  }
+
+  void requireExampleSurface(const Vertices& positions, Eigen::Index rows) const {
+    if (positions.rows() != rows || !positions.allFinite()) {
+      throw InputError("CompatibleTetBuilder: the example has " +
+                       std::to_string(positions.rows()) + " vertices (need " +
+                       std::to_string(rows) + ", all finite)");
+    }
+  }
 
   // Interior vertices within `rings` tet-rings of the given tets.
   std::vector<int> interiorRegion(const std::vector<int>& seedTets, int rings) const {
@@ -128,9 +154,10 @@ struct CompatibleTetBuilder::Impl {
   }
 
   // Step 3: untangle growing neighbourhoods of the inverted tets until none
-  // is left or the whole interior was free. Returns the rounds performed.
-  // Keeps the attempt with the fewest inverted tets.
-  int untangleInverted(Vertices& positions) const {
+  // is left, the whole interior was free, or the region would pass
+  // `maxRings` rings (0: no bound). Returns the rounds performed. Keeps the
+  // attempt with the fewest inverted tets.
+  int untangleInverted(Vertices& positions, int maxRings) const {
     int rounds = 0;
     std::vector<int> inverted = invertedTets(positions, rest.tets);
     Vertices current = positions;
@@ -147,6 +174,7 @@ struct CompatibleTetBuilder::Impl {
         inverted = std::move(now);
       }
       if (static_cast<int>(region.size()) == interiorCount) break;
+      if (maxRings > 0 && 2 * rings > maxRings) break;
     }
     return rounds;
   }
@@ -325,17 +353,6 @@ CompatibleTetBuilder::CompatibleTetBuilder(const TetMesh& rest, int surfaceVerte
   m.diagonal = boundingBoxDiagonal(rest.vertices);
   m.stars = vertexStars(rest.tets, vertexCount);
   requireInteriorVerticesInside(rest.tets, m.stars, surfaceVertexCount);
-  StiffnessBlocks blocks =
-      assembleStiffnessBlocks(rest.tets, m.elements, m.stars, surfaceVertexCount);
-  m.couplingBlock = std::move(blocks.coupling);
-  if (m.interiorCount > 0) {
-    m.solver.compute(blocks.interiorLower);
-    if (m.solver.info() != Eigen::Success) {
-      throw NumericalError(
-          "CompatibleTetBuilder: Cholesky factorisation of the interior stiffness block failed "
-          "(an interior vertex used by no tet?)");
-    }
-  }
 }
 
 CompatibleTetBuilder::~CompatibleTetBuilder() = default;
@@ -346,13 +363,10 @@ int CompatibleTetBuilder::surfaceVertexCount() const { return impl_->surfaceCoun
 const TetMesh& CompatibleTetBuilder::restMesh() const { return impl_->rest; }
 
 Vertices CompatibleTetBuilder::harmonicExtension(const Vertices& exampleSurface) const {
-  const Impl& m = *impl_;
-  if (exampleSurface.rows() != m.surfaceCount || !exampleSurface.allFinite()) {
-    throw InputError("CompatibleTetBuilder: the example surface has " +
-                     std::to_string(exampleSurface.rows()) + " vertices (need " +
-                     std::to_string(m.surfaceCount) + ", all finite)");
-  }
+  Impl& m = *impl_;
+  m.requireExampleSurface(exampleSurface, m.surfaceCount);
   if (m.interiorCount == 0) return exampleSurface;
+  m.requireFactor();
   const Eigen::MatrixXd boundary = exampleSurface;
   return m.assemble(exampleSurface,
                     m.solveInterior(Eigen::MatrixXd::Zero(m.interiorCount, 3), boundary));
@@ -367,12 +381,38 @@ CompatibleTetResult CompatibleTetBuilder::place(const Vertices& exampleSurface) 
   const bool harmonicAccepted = m.options.stopWhenValid && result.invertedTets.empty();
   if (m.interiorCount > 0 && !harmonicAccepted) {
     m.arapSearch(exampleSurface, result);
-    if (m.options.untangle) result.untangleRounds = m.untangleInverted(result.vertices);
+    if (m.options.untangle) {
+      result.untangleRounds = m.untangleInverted(result.vertices, m.options.untangleMaxRings);
+    }
     result.invertedTets = invertedTets(result.vertices, m.rest.tets);
   }
   m.measure(result.vertices, result);
   for (int t : result.invertedTets) {
     result.invertedVolumes.push_back(tetSignedVolume(result.vertices, m.rest.tets.row(t)));
+  }
+  return result;
+}
+
+CompatibleTetResult CompatibleTetBuilder::repair(const Vertices& start, int maxRings) const {
+  const Impl& m = *impl_;
+  m.requireExampleSurface(start, m.rest.vertices.rows());
+  CompatibleTetResult result;
+  result.vertices = start;
+  result.untangleRounds = m.untangleInverted(result.vertices, maxRings);
+  CompatibleTetResult measured = evaluate(result.vertices);
+  measured.untangleRounds = result.untangleRounds;
+  return measured;
+}
+
+CompatibleTetResult CompatibleTetBuilder::evaluate(const Vertices& positions) const {
+  const Impl& m = *impl_;
+  m.requireExampleSurface(positions, m.rest.vertices.rows());
+  CompatibleTetResult result;
+  result.vertices = positions;
+  result.invertedTets = invertedTets(positions, m.rest.tets);
+  m.measure(positions, result);
+  for (int t : result.invertedTets) {
+    result.invertedVolumes.push_back(tetSignedVolume(positions, m.rest.tets.row(t)));
   }
   return result;
 }

@@ -5,6 +5,9 @@
 #include <deque>
 #include <limits>
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 #include <Eigen/Geometry>
 #include <Eigen/LU>
 
@@ -17,6 +20,12 @@ constexpr double kArmijo = 1e-4;
 constexpr int kMaxHalvings = 40;
 // Gradient-norm stop of one round, relative to the gradient at its start.
 constexpr double kRelativeGradientTolerance = 1e-3;
+// Active tets per TBB task (~0.2 µs of work each).
+constexpr size_t kTetGrain = 1024;
+// An untangling attempt gives up when this many rounds in a row did not
+// raise the smallest det F: the free region is too small (or the example
+// cannot be embedded), and a larger region or refinement is the remedy.
+constexpr int kStagnantRounds = 8;
 
 class UntangleEnergy {
  public:
@@ -39,6 +48,8 @@ class UntangleEnergy {
       }
     }
     for (int t : active_) totalVolume_ += elements[static_cast<size_t>(t)].volume;
+    tetEnergy_.resize(active_.size());
+    tetGradient_.resize(active_.size());
   }
 
   Eigen::VectorXd freeVariables() const {
@@ -56,36 +67,26 @@ class UntangleEnergy {
   }
 
   // Energy at x; the gradient (same size as x) when `gradient` is non-null.
+  // The tets are evaluated in parallel into per-tet slots, then summed and
+  // scattered in tet order: the same result for any thread count.
   double evaluate(const Eigen::VectorXd& x, double epsilon, Eigen::VectorXd* gradient) {
     setFreeVariables(x);
-    if (gradient) gradient->setZero(x.size());
+    const bool wantGradient = gradient != nullptr;
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, active_.size(), kTetGrain),
+                      [&](const tbb::blocked_range<size_t>& range) {
+                        for (size_t i = range.begin(); i != range.end(); ++i) {
+                          evaluateTet(i, epsilon, wantGradient);
+                        }
+                      });
     double energy = 0.0;
-    for (int t : active_) {
-      const Eigen::RowVector4i tet = tets_.row(t);
-      const TetElement& element = elements_[static_cast<size_t>(t)];
-      const Eigen::Matrix3d f = deformationGradient(positions_, tet, element);
-      const double j = f.determinant();
-      const double root = std::sqrt(epsilon * epsilon + j * j);
-      const double chi = 0.5 * (j + root);
-      const double dChi = chi / root;
-      const double frobenius = f.squaredNorm();
-      const double cubeRoot = std::cbrt(chi);
-      const double chiPow = 1.0 / (cubeRoot * cubeRoot);
-      const double weight = element.volume / totalVolume_;
-      energy +=
-          weight * ((1 - kVolumeWeight) * frobenius * chiPow + kVolumeWeight * (j * j + 1) / chi);
-      if (!gradient) continue;
-      const double dEdJ = (1 - kVolumeWeight) * frobenius * (-2.0 / 3.0) * chiPow / chi * dChi +
-                          kVolumeWeight * (2 * j / chi - (j * j + 1) * dChi / (chi * chi));
-      Eigen::Matrix3d cofactor;
-      cofactor.col(0) = f.col(1).cross(f.col(2));
-      cofactor.col(1) = f.col(2).cross(f.col(0));
-      cofactor.col(2) = f.col(0).cross(f.col(1));
-      const Eigen::Matrix3d dEdF =
-          weight * (2 * (1 - kVolumeWeight) * chiPow * f + dEdJ * cofactor);
+    for (double e : tetEnergy_) energy += e;
+    if (!wantGradient) return energy;
+    gradient->setZero(x.size());
+    for (size_t i = 0; i < active_.size(); ++i) {
+      const Eigen::RowVector4i tet = tets_.row(active_[i]);
       for (int a = 0; a < 4; ++a) {
-        const int i = variable_[static_cast<size_t>(tet(a))];
-        if (i >= 0) gradient->segment<3>(3 * i) += dEdF * element.gradients.col(a);
+        const int v = variable_[static_cast<size_t>(tet(a))];
+        if (v >= 0) gradient->segment<3>(3 * v) += tetGradient_[i].col(a);
       }
     }
     return energy;
@@ -104,12 +105,44 @@ class UntangleEnergy {
   const Vertices& positions() const { return positions_; }
 
  private:
+  // Energy of active tet i into tetEnergy_[i]; with `wantGradient`, its
+  // derivative with respect to each corner into tetGradient_[i] (3 by 4).
+  void evaluateTet(size_t i, double epsilon, bool wantGradient) {
+    const int t = active_[i];
+    const Eigen::RowVector4i tet = tets_.row(t);
+    const TetElement& element = elements_[static_cast<size_t>(t)];
+    const Eigen::Matrix3d f = deformationGradient(positions_, tet, element);
+    const double j = f.determinant();
+    const double root = std::sqrt(epsilon * epsilon + j * j);
+    // χ = (J + root) / 2, written for J <= 0 as ε² / (2 (root − J)): the sum
+    // cancels catastrophically there (to 0 once ε² < ulp(J²)).
+    const double chi = j > 0.0 ? 0.5 * (j + root) : 0.5 * epsilon * epsilon / (root - j);
+    const double dChi = chi / root;
+    const double frobenius = f.squaredNorm();
+    const double cubeRoot = std::cbrt(chi);
+    const double chiPow = 1.0 / (cubeRoot * cubeRoot);
+    const double weight = element.volume / totalVolume_;
+    tetEnergy_[i] =
+        weight * ((1 - kVolumeWeight) * frobenius * chiPow + kVolumeWeight * (j * j + 1) / chi);
+    if (!wantGradient) return;
+    const double dEdJ = (1 - kVolumeWeight) * frobenius * (-2.0 / 3.0) * chiPow / chi * dChi +
+                        kVolumeWeight * (2 * j / chi - (j * j + 1) * dChi / (chi * chi));
+    Eigen::Matrix3d cofactor;
+    cofactor.col(0) = f.col(1).cross(f.col(2));
+    cofactor.col(1) = f.col(2).cross(f.col(0));
+    cofactor.col(2) = f.col(0).cross(f.col(1));
+    const Eigen::Matrix3d dEdF = weight * (2 * (1 - kVolumeWeight) * chiPow * f + dEdJ * cofactor);
+    tetGradient_[i] = dEdF * element.gradients;
+  }
+
   const Tets& tets_;
   const std::vector<TetElement>& elements_;
   const std::vector<int>& freeVertices_;
   std::vector<int> variable_;  // per vertex: its index in freeVertices_, or -1
   Vertices positions_;
   std::vector<int> active_;
+  std::vector<double> tetEnergy_;                        // per active tet
+  std::vector<Eigen::Matrix<double, 3, 4>> tetGradient_;  // per active tet
   double totalVolume_ = 0.0;
 };
 
@@ -189,12 +222,20 @@ UntangleOutcome untangle(const Tets& tets, const std::vector<TetElement>& elemen
   // ε schedule of the paper (Alg. 1): start at the scale of the unit
   // Jacobian, then shrink according to the energy decrease of each round.
   double epsilon = 1.0;
-  while (outcome.minDet <= 0.0 && outcome.rounds < maxRounds) {
+  double bestMinDet = outcome.minDet;
+  int stagnant = 0;
+  while (outcome.minDet <= 0.0 && outcome.rounds < maxRounds && stagnant < kStagnantRounds) {
     const double before = energy.evaluate(x, epsilon, nullptr);
     minimiseLbfgs(energy, epsilon, iterationsPerRound, x);
     const double after = energy.evaluate(x, epsilon, nullptr);
     ++outcome.rounds;
     outcome.minDet = energy.minDet();
+    if (outcome.minDet > bestMinDet) {
+      bestMinDet = outcome.minDet;
+      stagnant = 0;
+    } else {
+      ++stagnant;
+    }
     const double sigma = std::max(1.0 - after / before, 0.1);
     const double minDet = outcome.minDet;
     const double mu =

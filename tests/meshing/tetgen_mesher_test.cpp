@@ -12,6 +12,7 @@
 
 #include <unistd.h>
 
+#include "cgal_meshes.h"
 #include "test_surfaces.h"
 #include "tetblend/core/error.h"
 #include "tetblend/core/tet_geometry.h"
@@ -224,35 +225,17 @@ TEST(TetGenMesher, SilentUnlessVerbosityIsAsked) {
   EXPECT_NE(::testing::internal::GetCapturedStdout(), "");
 }
 
-// Closed meshes shipped by Debian's libcgal-demo (data.tar.gz, data/meshes).
-std::string cgalDataTarball() {
-  FILE* pipe = popen("dpkg -L libcgal-demo 2>/dev/null | grep 'data.tar.gz$'", "r");
-  if (pipe == nullptr) return "";
-  char line[4096] = {0};
-  std::string path;
-  if (std::fgets(line, sizeof line, pipe) != nullptr) path = line;
-  pclose(pipe);
-  while (!path.empty() && (path.back() == '\n' || path.back() == '\r')) path.pop_back();
-  return std::filesystem::exists(path) ? path : "";
-}
-
 TEST(TetGenMesher, RealMeshesFromCgalDemo) {
-  const std::string tarball = cgalDataTarball();
-  if (tarball.empty()) {
-    GTEST_SKIP() << "Debian package libcgal-demo is not installed (setup.sh installs it): "
-                    "no data/meshes/*.off to test on";
-  }
-  const std::filesystem::path dir =
-      std::filesystem::temp_directory_path() / ("tetblend_cgal_meshes_" + std::to_string(getpid()));
-  std::filesystem::create_directories(dir);
+  const std::string tarball = testing_cgal::cgalDataTarball();
+  if (tarball.empty()) GTEST_SKIP() << testing_cgal::kMissingCgalDemo;
   const std::vector<std::string> names = {"sphere.off", "elephant.off"};
-  std::string command = "tar -xzf '" + tarball + "' -C '" + dir.string() + "'";
-  for (const std::string& n : names) command += " data/meshes/" + n;
-  command += " data/meshes/camel.off";
-  ASSERT_EQ(std::system(command.c_str()), 0) << command;
+  const std::filesystem::path meshes =
+      testing_cgal::extractCgalMeshes(tarball, {"sphere.off", "elephant.off", "camel.off"}, "tetgen");
+  ASSERT_FALSE(meshes.empty());
+  const std::filesystem::path dir = meshes.parent_path().parent_path();
   for (const std::string& n : names) {
     SCOPED_TRACE(n);
-    const std::string path = (dir / "data" / "meshes" / n).string();
+    const std::string path = (meshes / n).string();
     const SurfaceMesh surface = readSurface(path);
     const SurfaceValidation v = validateSurface(surface, path);
     ASSERT_TRUE(v.ok()) << v.problems.front().message;
@@ -262,7 +245,7 @@ TEST(TetGenMesher, RealMeshesFromCgalDemo) {
   }
   // camel.off intersects itself: named by validation, refused before TetGen
   // (which would fail on it).
-  const std::string camel = (dir / "data" / "meshes" / "camel.off").string();
+  const std::string camel = (meshes / "camel.off").string();
   const SurfaceMesh surface = readSurface(camel);
   const SurfaceValidation v = validateSurface(surface, camel);
   ASSERT_FALSE(v.problems.empty());

@@ -1,0 +1,93 @@
+#pragma once
+// Example-aware compatible tet meshes: the rest tet mesh is refined where the
+// examples need it, then every example's interior is placed on the refined
+// mesh (compatible_tets.h).
+//
+// Why refinement: a tet whose four vertices all lie on the surface is fixed
+// by the example surfaces alone, so no placement of interior vertices can
+// repair it when an example turns it inside out (a thin part bent or twisted
+// across the tet); likewise an interior edge joining two surface vertices, or
+// an interior face whose three edges lie on the surface. Such tets are split
+// (stellar subdivision at the centroid of those edges and faces) until every
+// new tet has a movable interior vertex. Refinement never touches the
+// surface: surface vertices stay first, bit for bit and in order; boundary
+// faces are unchanged; new vertices are appended as interior vertices.
+//
+// The stages:
+//  1. all-surface tets inverted by any example are split, before any
+//     placement (milliseconds; repeated while new ones appear, at most
+//     maxRounds times);
+//  2. every example is placed (harmonic → ARAP → untangling,
+//     compatible_tets.h; one factorisation for all);
+//  3. while an example whose surface does not intersect itself keeps
+//     inverted tets (at most maxRounds rounds): those tets are split as in
+//     stage 1, or where they already have an interior vertex their longest
+//     interior edge is halved; every example's new vertices start at the
+//     centroid of their simplex in that example (a valid placement stays
+//     valid: each child tet has a positive fraction of its parent's volume)
+//     and only the still-inverted regions are untangled again (no new
+//     factorisation). Rounds stop early when the inverted count grows.
+// Examples whose surface intersects itself cannot be embedded where it does;
+// they are untangled only locally (untangleMaxRings) so they fail fast, and
+// they do not drive refinement.
+
+#include <cstddef>
+#include <functional>
+#include <vector>
+
+#include "tetblend/core/mesh_types.h"
+#include "tetblend/meshing/compatible_tets.h"
+
+namespace tetblend {
+
+/// Options of buildCompatibleTetMeshes, with their defaults.
+struct ExampleAwareOptions {
+  /// Placement of the interior vertices on each round's mesh.
+  CompatibleTetOptions placement;
+  /// Refinement rounds at most, in stage 1 and in stage 3 each (0: place on
+  /// the given mesh only).
+  int maxRounds = 8;
+  /// Free-region bound (tet rings) of the untangling of examples whose
+  /// surface intersects itself (CompatibleTetOptions::untangleMaxRings).
+  int intersectingUntangleRings = 3;
+};
+
+/// The compatible tet meshes of a rest mesh and its examples.
+struct CompatibleTetMeshes {
+  /// The (possibly refined) rest mesh: rows 0..#S-1 are the input's surface
+  /// vertices bit for bit, then the input's interior vertices, then the
+  /// Steiner points added; all tets positively oriented.
+  TetMesh rest;
+  /// One per example, placed on `rest` (vertices #V by 3 and the tets that
+  /// stay inverted, ascending).
+  std::vector<CompatibleTetResult> examples;
+  /// Per example: intersecting face pairs of its surface (0 = clean).
+  std::vector<std::size_t> selfIntersectingPairs;
+  int steinerPoints = 0;           ///< interior vertices added by refinement
+  int rounds = 0;                  ///< refinement rounds performed (stages 1 and 3)
+  int allSurfaceTetsInverted = 0;  ///< all-surface tets found inverted in stage 1
+};
+
+/// Called after each stage with a short description (for progress display).
+using MeshingProgress = std::function<void(const char* stage)>;
+
+/// Builds compatible tet meshes for `rest` (#V by 3 vertices, #T by 4
+/// positively oriented tets, surface vertices 0..surfaceVertexCount-1 first,
+/// as tetrahedralize returns them) and the example surfaces (#S by 3 each,
+/// the rest surface's vertex order), refining the rest as described above.
+/// The example surfaces' triangles are the rest mesh's boundary faces.
+/// Examples whose tets stay inverted come back with them listed (the caller
+/// decides whether to refuse or exclude them). Throws what
+/// CompatibleTetBuilder throws (InputError on bad sizes or non-finite
+/// positions).
+CompatibleTetMeshes buildCompatibleTetMeshes(const TetMesh& rest, int surfaceVertexCount,
+                                             const std::vector<Vertices>& exampleSurfaces,
+                                             const ExampleAwareOptions& options = {},
+                                             const MeshingProgress& progress = {});
+
+/// Tets of `tets` whose four vertices are all < surfaceVertexCount and whose
+/// signed volume in `positions` (at least #S rows) is <= 0, ascending.
+std::vector<int> invertedAllSurfaceTets(const Tets& tets, int surfaceVertexCount,
+                                        const Vertices& positions);
+
+}  // namespace tetblend

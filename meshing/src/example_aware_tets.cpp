@@ -1,0 +1,186 @@
+#include "tetblend/meshing/example_aware_tets.h"
+
+#include <algorithm>
+#include <cstddef>
+
+#include "tet_stellar_split.h"
+#include "tetblend/core/error.h"
+#include "tetblend/core/tet_geometry.h"
+#include "tetblend/meshing/self_intersection.h"
+#include "tetblend/meshing/tet_boundary.h"
+
+namespace tetblend {
+namespace {
+
+// Stage 3 rounds in a row without fewer inverted tets before it gives up.
+constexpr int kPatience = 2;
+
+void sortUnique(std::vector<int>& values) {
+  std::sort(values.begin(), values.end());
+  values.erase(std::unique(values.begin(), values.end()), values.end());
+}
+
+// What to split to free the tets `bad` of `mesh` (simplicesToSplit), edges
+// first, each once.
+std::vector<Simplex> simplicesFreeing(const TetMesh& mesh, const std::vector<int>& bad,
+                                      int surfaceCount, const BoundarySimplices& boundary) {
+  std::vector<Simplex> simplices;
+  for (int t : bad) {
+    for (const Simplex& simplex : simplicesToSplit(mesh, t, surfaceCount, boundary)) {
+      simplices.push_back(simplex);
+    }
+  }
+  std::sort(simplices.begin(), simplices.end());
+  simplices.erase(std::unique(simplices.begin(), simplices.end()), simplices.end());
+  return simplices;
+}
+
+// `positions` (one row per vertex before the split) extended by the centroid
+// of each split simplex, in the order splitSimplices appends them.
+Vertices extendedPositions(const Vertices& positions, const std::vector<Simplex>& simplices) {
+  Vertices result(positions.rows() + static_cast<Eigen::Index>(simplices.size()), 3);
+  result.topRows(positions.rows()) = positions;
+  for (std::size_t i = 0; i < simplices.size(); ++i) {
+    Eigen::RowVector3d centroid = Eigen::RowVector3d::Zero();
+    for (int j = 0; j < simplices[i].count; ++j) {
+      centroid += positions.row(simplices[i].vertices[static_cast<std::size_t>(j)]);
+    }
+    result.row(positions.rows() + static_cast<Eigen::Index>(i)) = centroid / simplices[i].count;
+  }
+  return result;
+}
+
+// Splits `simplices` in the rest mesh and extends every placed example.
+void split(const std::vector<Simplex>& simplices, CompatibleTetMeshes& meshes) {
+  meshes.rest = splitSimplices(meshes.rest, simplices);
+  for (CompatibleTetResult& example : meshes.examples) {
+    example.vertices = extendedPositions(example.vertices, simplices);
+  }
+  meshes.steinerPoints += static_cast<int>(simplices.size());
+  ++meshes.rounds;
+}
+
+// Inverted tets summed over the examples whose surface is clean.
+std::size_t countInvertedInClean(const CompatibleTetMeshes& meshes) {
+  std::size_t count = 0;
+  for (std::size_t k = 0; k < meshes.examples.size(); ++k) {
+    if (meshes.selfIntersectingPairs[k] == 0) count += meshes.examples[k].invertedTets.size();
+  }
+  return count;
+}
+
+}  // namespace
+
+std::vector<int> invertedAllSurfaceTets(const Tets& tets, int surfaceVertexCount,
+                                        const Vertices& positions) {
+  std::vector<int> result;
+  for (Eigen::Index t = 0; t < tets.rows(); ++t) {
+    if (tets.row(t).maxCoeff() >= surfaceVertexCount) continue;
+    if (!(tetSignedVolume(positions, tets.row(t)) > 0.0)) result.push_back(static_cast<int>(t));
+  }
+  return result;
+}
+
+CompatibleTetMeshes buildCompatibleTetMeshes(const TetMesh& rest, int surfaceVertexCount,
+                                             const std::vector<Vertices>& exampleSurfaces,
+                                             const ExampleAwareOptions& options,
+                                             const MeshingProgress& progress) {
+  for (const Vertices& example : exampleSurfaces) {
+    if (example.rows() != surfaceVertexCount || !example.allFinite()) {
+      throw InputError("buildCompatibleTetMeshes: an example surface has " +
+                       std::to_string(example.rows()) + " vertices (need " +
+                       std::to_string(surfaceVertexCount) + ", all finite)");
+    }
+  }
+  CompatibleTetMeshes meshes;
+  meshes.rest = rest;
+  const BoundarySimplices boundary = boundarySimplices(rest);
+  const Triangles triangles = boundarySurface(rest).triangles;
+  for (const Vertices& example : exampleSurfaces) {
+    meshes.selfIntersectingPairs.push_back(findSelfIntersections(example, triangles, 0).pairCount);
+  }
+
+  // Stage 1: all-surface tets an example inverts (no placement can help).
+  for (int round = 0; round < options.maxRounds; ++round) {
+    std::vector<int> bad;
+    for (const Vertices& example : exampleSurfaces) {
+      const std::vector<int> inverted =
+          invertedAllSurfaceTets(meshes.rest.tets, surfaceVertexCount, example);
+      bad.insert(bad.end(), inverted.begin(), inverted.end());
+    }
+    sortUnique(bad);
+    const std::vector<Simplex> simplices =
+        simplicesFreeing(meshes.rest, bad, surfaceVertexCount, boundary);
+    if (simplices.empty()) break;
+    meshes.allSurfaceTetsInverted += static_cast<int>(bad.size());
+    split(simplices, meshes);
+    if (progress) progress("refine");
+  }
+
+  // Stage 2: place every example.
+  CompatibleTetOptions placement = options.placement;
+  placement.untangle = false;
+  const CompatibleTetBuilder builder(meshes.rest, surfaceVertexCount, placement);
+  for (std::size_t k = 0; k < exampleSurfaces.size(); ++k) {
+    CompatibleTetResult placed = builder.place(exampleSurfaces[k]);
+    if (options.placement.untangle && !placed.invertedTets.empty()) {
+      const bool clean = meshes.selfIntersectingPairs[k] == 0;
+      CompatibleTetResult repaired = builder.repair(
+          placed.vertices, clean ? options.placement.untangleMaxRings
+                                 : options.intersectingUntangleRings);
+      repaired.harmonicInvertedCount = placed.harmonicInvertedCount;
+      repaired.arapIterations = placed.arapIterations;
+      placed = std::move(repaired);
+    }
+    meshes.examples.push_back(std::move(placed));
+    if (progress) progress("place");
+  }
+
+  // Stage 3: refine where clean examples stay inverted, untangle again. A
+  // split halves an inverted tet into two that may both stay inverted, so a
+  // round may count more before the next one counts fewer: the search stops
+  // after kPatience rounds without a new best, and keeps the best state.
+  std::size_t best = countInvertedInClean(meshes);
+  CompatibleTetMeshes bestMeshes;
+  int sinceBest = 0;
+  for (int round = 0; round < options.maxRounds && options.placement.untangle && best > 0 &&
+                      sinceBest < kPatience;
+       ++round) {
+    std::vector<int> bad;
+    for (std::size_t k = 0; k < exampleSurfaces.size(); ++k) {
+      if (meshes.selfIntersectingPairs[k] > 0) continue;
+      const std::vector<int>& inverted = meshes.examples[k].invertedTets;
+      bad.insert(bad.end(), inverted.begin(), inverted.end());
+    }
+    sortUnique(bad);
+    const std::vector<Simplex> simplices =
+        simplicesFreeing(meshes.rest, bad, surfaceVertexCount, boundary);
+    if (simplices.empty()) break;
+    if (sinceBest == 0) bestMeshes = meshes;
+    split(simplices, meshes);
+    const CompatibleTetBuilder refined(meshes.rest, surfaceVertexCount, placement);
+    for (std::size_t k = 0; k < exampleSurfaces.size(); ++k) {
+      CompatibleTetResult& example = meshes.examples[k];
+      const bool clean = meshes.selfIntersectingPairs[k] == 0;
+      CompatibleTetResult updated =
+          clean ? refined.repair(example.vertices, options.placement.untangleMaxRings)
+                : refined.evaluate(example.vertices);
+      updated.harmonicInvertedCount = example.harmonicInvertedCount;
+      updated.arapIterations = example.arapIterations;
+      updated.untangleRounds += example.untangleRounds;
+      example = std::move(updated);
+    }
+    if (progress) progress("refine");
+    const std::size_t count = countInvertedInClean(meshes);
+    if (count < best) {
+      best = count;
+      sinceBest = 0;
+    } else {
+      ++sinceBest;
+    }
+  }
+  if (sinceBest > 0) meshes = std::move(bestMeshes);
+  return meshes;
+}
+
+}  // namespace tetblend

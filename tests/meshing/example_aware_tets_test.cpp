@@ -1,0 +1,126 @@
+// buildCompatibleTetMeshes: all-surface tets that an example inverts are
+// repaired by Steiner points, the surface stays bit for bit, and the refined
+// mesh fills exactly the same solid.
+
+#include "tetblend/meshing/example_aware_tets.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <vector>
+
+#include "tetblend/core/tet_geometry.h"
+#include "tetblend/meshing/procedural_shapes.h"
+#include "tetblend/meshing/self_intersection.h"
+#include "tetblend/meshing/surface_validation.h"
+#include "tetblend/meshing/tet_boundary.h"
+#include "tetblend/meshing/tetgen_mesher.h"
+
+namespace tetblend {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+// Volumes of the refined and the original mesh agree to round-off: each split
+// halves tets exactly up to one rounding of the midpoint per split.
+constexpr double kVolumeRelTol = 1e-12;
+
+double totalVolume(const TetMesh& mesh) {
+  double sum = 0.0;
+  for (Eigen::Index t = 0; t < mesh.tets.rows(); ++t) sum += tetSignedVolume(mesh.vertices, mesh.tets.row(t));
+  return sum;
+}
+
+std::vector<std::array<int, 3>> sortedFaces(const Triangles& triangles) {
+  std::vector<std::array<int, 3>> faces;
+  for (Eigen::Index f = 0; f < triangles.rows(); ++f) {
+    std::array<int, 3> face{triangles(f, 0), triangles(f, 1), triangles(f, 2)};
+    std::rotate(face.begin(), std::min_element(face.begin(), face.end()), face.end());
+    faces.push_back(face);
+  }
+  std::sort(faces.begin(), faces.end());
+  return faces;
+}
+
+// The samples' square bar (4 by 0.6 by 0.6, 32 by 3 by 3 cells on its
+// surface, no interior vertex) meshed by TetGen with its default quality
+// bound: the interior gets a handful of Steiner points, and tets spanning the
+// bar between surface vertices remain. Twisted by 6π the bar's surface stays
+// free of self-intersections, but five all-surface tets turn inside out (their
+// four corners follow the surface), and no placement of the interior can
+// repair them.
+struct AllSurfaceBar {
+  SurfaceMesh surface;
+  TetMesh rest;
+  Vertices twisted;
+};
+
+AllSurfaceBar allSurfaceBar() {
+  AllSurfaceBar bar;
+  const SurfaceMesh boundary = boundarySurface(boxTetMesh(32, 3, 3, Eigen::Vector3d(4.0, 0.6, 0.6)));
+  bar.surface = removeVertices(boundary, unreferencedVertices(boundary));
+  bar.rest = tetrahedralize(bar.surface);
+  bar.twisted = twistAboutAxis(bar.surface.vertices, Eigen::Vector3d(-2, 0, 0),
+                               Eigen::Vector3d::UnitX(), 6 * kPi, 4.0);
+  return bar;
+}
+
+TEST(ExampleAwareTets, ConstructedAllSurfaceTetIsInvertedByTheExample) {
+  const AllSurfaceBar bar = allSurfaceBar();
+  const int surfaceCount = static_cast<int>(bar.surface.vertices.rows());
+  ASSERT_EQ(findSelfIntersections(bar.twisted, bar.surface.triangles, 1).pairCount, 0u);
+  const std::vector<int> allSurface = invertedAllSurfaceTets(bar.rest.tets, surfaceCount, bar.twisted);
+  EXPECT_FALSE(allSurface.empty());
+  // Placement alone leaves them (and more) inverted.
+  const CompatibleTetResult placed = CompatibleTetBuilder(bar.rest, surfaceCount).place(bar.twisted);
+  for (int t : allSurface) {
+    EXPECT_TRUE(std::binary_search(placed.invertedTets.begin(), placed.invertedTets.end(), t)) << t;
+  }
+}
+
+TEST(ExampleAwareTets, SteinerPointsRepairAllSurfaceTets) {
+  const AllSurfaceBar bar = allSurfaceBar();
+  const int surfaceCount = static_cast<int>(bar.surface.vertices.rows());
+  const CompatibleTetMeshes built = buildCompatibleTetMeshes(bar.rest, surfaceCount, {bar.twisted});
+  ASSERT_EQ(built.examples.size(), 1u);
+  EXPECT_TRUE(built.examples[0].invertedTets.empty())
+      << built.examples[0].invertedTets.size() << " tets stay inverted";
+  EXPECT_GT(built.steinerPoints, 0);
+  EXPECT_GT(built.allSurfaceTetsInverted, 0);
+  EXPECT_EQ(built.rest.vertices.rows(), bar.rest.vertices.rows() + built.steinerPoints);
+  // The surface is kept bit for bit: the same leading vertices, the same
+  // boundary faces; the solid is the same.
+  EXPECT_TRUE(built.rest.vertices.topRows(surfaceCount) == bar.surface.vertices);
+  EXPECT_EQ(sortedFaces(boundarySurface(built.rest).triangles), sortedFaces(bar.surface.triangles));
+  EXPECT_NEAR(totalVolume(built.rest), totalVolume(bar.rest), kVolumeRelTol * totalVolume(bar.rest));
+  for (Eigen::Index t = 0; t < built.rest.tets.rows(); ++t) {
+    EXPECT_GT(tetSignedVolume(built.rest.vertices, built.rest.tets.row(t)), 0.0) << "tet " << t;
+  }
+  EXPECT_TRUE(built.examples[0].vertices.topRows(surfaceCount) == bar.twisted);
+}
+
+TEST(ExampleAwareTets, ValidExamplesLeaveTheMeshAlone) {
+  const AllSurfaceBar bar = allSurfaceBar();
+  const int surfaceCount = static_cast<int>(bar.surface.vertices.rows());
+  Vertices stretched = bar.surface.vertices;
+  stretched.col(0) *= 1.5;
+  const CompatibleTetMeshes built = buildCompatibleTetMeshes(bar.rest, surfaceCount, {stretched});
+  EXPECT_EQ(built.steinerPoints, 0);
+  EXPECT_EQ(built.rounds, 0);
+  EXPECT_TRUE(built.rest.tets == bar.rest.tets);
+  EXPECT_TRUE(built.examples[0].invertedTets.empty());
+}
+
+TEST(ExampleAwareTets, NoRoundsMeansPlacementOnly) {
+  const AllSurfaceBar bar = allSurfaceBar();
+  const int surfaceCount = static_cast<int>(bar.surface.vertices.rows());
+  ExampleAwareOptions options;
+  options.maxRounds = 0;
+  const CompatibleTetMeshes built =
+      buildCompatibleTetMeshes(bar.rest, surfaceCount, {bar.twisted}, options);
+  EXPECT_EQ(built.steinerPoints, 0);
+  EXPECT_FALSE(built.examples[0].invertedTets.empty());
+}
+
+}  // namespace
+}  // namespace tetblend
