@@ -177,8 +177,9 @@ TETBLEND_LANE double dotLane(const double a[3], const double b[3]) {
 }
 
 /// polar_detail::polarLogClosedForm (polar.cpp) on a (row-major): the
-/// rotation factor and log S. False where the scalar psi must decide
-/// (det <= 0, non-finite, cond > kClosedFormMaxCond, residual check failed).
+/// rotation factor and log S. False where the scalar psi must decide (det
+/// outside [kUnscaledMinDet, kUnscaledMaxDet], including det <= 0 and
+/// non-finite; cond > kClosedFormMaxCond; residual check failed).
 TETBLEND_LANE bool polarLogLane(const Mat& am, Mat& rot, Sym& logS) {
   const double* a = am.m;
   const double det = a[0] * (a[4] * a[8] - a[5] * a[7]) - a[1] * (a[3] * a[8] - a[5] * a[6]) +
@@ -190,7 +191,9 @@ TETBLEND_LANE bool polarLogLane(const Mat& am, Mat& rot, Sym& logS) {
   double mu1, mu2, mu3;
   eigenvaluesLane(m, mu1, mu2, mu3);
   constexpr double kMaxCond2 = polar_detail::kClosedFormMaxCond * polar_detail::kClosedFormMaxCond;
-  const bool inRange = (det > 0.0) & (det <= 1e300) & (mu3 > 0.0) & (mu1 <= kMaxCond2 * mu3);
+  const bool inRange = (det >= polar_detail::kUnscaledMinDet) &
+                       (det <= polar_detail::kUnscaledMaxDet) & (mu3 > 0.0) &
+                       (mu1 <= kMaxCond2 * mu3);
   // Most isolated eigenvector w by cross products of the rows of M - mu I.
   const bool top = mu1 - mu2 >= mu2 - mu3;
   const double muIso = top ? mu1 : mu3;
