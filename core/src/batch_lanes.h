@@ -75,9 +75,11 @@ TETBLEND_LANE bool symExpLane(const Sym& y, Sym& out) {
   double lambda1, lambda2, lambda3;
   eigenvaluesLane(y, lambda1, lambda2, lambda3);
   const double l1 = lambda1 - lambda2, l3 = lambda3 - lambda2, h = l1 - l3;
-  // exp(lambda2), expm1(l1), expm1(l3) in range (|l1|, |l3| <= h).
-  const bool ok = (std::max(std::abs(lambda1), std::abs(lambda3)) <= lane_math::kExpMaxArg) &
-                  (h <= lane_math::kExpMaxArg);
+  // exp(lambda2), expm1(l1), expm1(l3) in range (|l1|, |l3| <= h); the
+  // scalar kernel's closed-form range, so the rest goes to its fallback.
+  static_assert(sym3_detail::kExpDirectMaxArg <= lane_math::kExpMaxArg);
+  const bool ok = (std::max(std::abs(lambda1), std::abs(lambda3)) <= sym3_detail::kExpDirectMaxArg) &
+                  (h <= sym3_detail::kExpDirectMaxArg);
   double e2, unused, em1, em3;
   lane_math::expExpm1Lane(ok ? lambda2 : 0.0, e2, unused);
   lane_math::expExpm1Lane(ok ? l1 : 0.0, unused, em1);
@@ -97,11 +99,14 @@ TETBLEND_LANE bool symExpLane(const Sym& y, Sym& out) {
 }
 
 /// symLog (sym3.cpp, Kaji–Ochiai eq. (6)) on its closed-form range
-/// (cond <= kLogClosedFormMaxCond); false elsewhere.
+/// (cond <= kLogClosedFormMaxCond, largest diagonal entry in the unscaled
+/// range); false elsewhere.
 TETBLEND_LANE bool symLogLane(const Sym& s, Sym& out) {
   double mu1, mu2, mu3;
   eigenvaluesLane(s, mu1, mu2, mu3);
-  const bool ok = mu3 >= kMinNormal && mu1 <= sym3_detail::kLogClosedFormMaxCond * mu3;
+  const double d = std::max(s.xx, std::max(s.yy, s.zz));
+  const bool ok = mu3 >= kMinNormal && mu1 <= sym3_detail::kLogClosedFormMaxCond * mu3 &&
+                  d >= sym3_detail::kLogUnscaledMin && d <= sym3_detail::kLogUnscaledMax;
   const double m2 = ok ? mu2 : 1.0;
   const double x1 = (mu1 - mu2) / m2, x3 = (mu3 - mu2) / m2, h = x1 - x3;
   const double d1 = x1 == 0.0 ? 1.0 : lane_math::log1pLane(ok ? x1 : 0.0) / x1;
@@ -172,8 +177,9 @@ TETBLEND_LANE double dotLane(const double a[3], const double b[3]) {
 }
 
 /// polar_detail::polarLogClosedForm (polar.cpp) on a (row-major): the
-/// rotation factor and log S. False where the scalar psi must decide
-/// (det <= 0, non-finite, cond > kClosedFormMaxCond, residual check failed).
+/// rotation factor and log S. False where the scalar psi must decide (det
+/// outside [kUnscaledMinDet, kUnscaledMaxDet], including det <= 0 and
+/// non-finite; cond > kClosedFormMaxCond; residual check failed).
 TETBLEND_LANE bool polarLogLane(const Mat& am, Mat& rot, Sym& logS) {
   const double* a = am.m;
   const double det = a[0] * (a[4] * a[8] - a[5] * a[7]) - a[1] * (a[3] * a[8] - a[5] * a[6]) +
@@ -185,7 +191,9 @@ TETBLEND_LANE bool polarLogLane(const Mat& am, Mat& rot, Sym& logS) {
   double mu1, mu2, mu3;
   eigenvaluesLane(m, mu1, mu2, mu3);
   constexpr double kMaxCond2 = polar_detail::kClosedFormMaxCond * polar_detail::kClosedFormMaxCond;
-  const bool inRange = (det > 0.0) & (det <= 1e300) & (mu3 > 0.0) & (mu1 <= kMaxCond2 * mu3);
+  const bool inRange = (det >= polar_detail::kUnscaledMinDet) &
+                       (det <= polar_detail::kUnscaledMaxDet) & (mu3 > 0.0) &
+                       (mu1 <= kMaxCond2 * mu3);
   // Most isolated eigenvector w by cross products of the rows of M - mu I.
   const bool top = mu1 - mu2 >= mu2 - mu3;
   const double muIso = top ? mu1 : mu3;

@@ -37,6 +37,13 @@ AffineParams psi(const Eigen::Matrix4d& a) {
 }
 
 AffineParams psi(const Eigen::Matrix4d& a, const Eigen::Vector3d& rotationReference) {
+  if (!rotationReference.allFinite()) {
+    std::ostringstream msg;
+    msg << "psi: the rotation reference (" << rotationReference.transpose()
+        << ") is not finite; pass the rotation log of a neighbouring element or the"
+           " previous frame, or use psi without a reference";
+    throw InputError(msg.str());
+  }
   const PolarLogDecomposition polar = polarDecomposeLog(a.topLeftCorner<3, 3>());
   return {a.topRightCorner<3, 1>(), so3LogClosest(polar.rotation, rotationReference),
           polar.stretchLog};

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "power_of_two.h"
 #include "tetblend/core/error.h"
 #include "tetblend/core/sym3.h"
 
@@ -19,8 +20,20 @@ const double kNewtonStopStep = std::sqrt(2.220446049250313e-16);
 /// Relative step below which the Frobenius scaling is switched off (Higham,
 /// Functions of Matrices, §8.6: scaling only helps far from convergence).
 constexpr double kNewtonUnscaledStep = 1e-2;
+/// Norm above which a Newton iterate is divided by a power of two before its
+/// cofactor (entries up to |X|^2) is formed: the scaled iteration is
+/// invariant under X -> t X, and the first iterate reaches ~sqrt(cond(A))
+/// from a start normalised to det ~ 1, beyond this only for cond(A) > ~1e300.
+constexpr double kNewtonRescaleNorm = 0x1p+500;
 /// Iteration cap. With Frobenius scaling, cond(A) = 1e16 needs about 10.
 constexpr int kNewtonMaxIterations = 30;
+
+/// Frobenius norm; for matrices whose squared norm overflows (after
+/// normalisation only at cond(A) beyond ~1e100) the scaled stableNorm.
+double frobeniusNorm(const Eigen::Matrix3d& m) {
+  const double n = m.norm();
+  return std::isinf(n) ? m.stableNorm() : n;
+}
 
 /// Cofactor matrix of x, det(x) x^{-T}: its columns c_i satisfy c_i . x_j =
 /// det(x) delta_ij, i.e. c^T x = det(x) I.
@@ -32,28 +45,61 @@ Eigen::Matrix3d cofactor(const Eigen::Matrix3d& x) {
   return c;
 }
 
+[[noreturn]] void throwNotPositive(const char* function, double det) {
+  std::ostringstream msg;
+  msg << function << ": det A = " << det
+      << " is not positive (or A is not finite); Aff+(3) needs det > 0 - the map"
+         " flattens or mirrors the element";
+  throw DomainError(msg.str());
+}
+
+/// k such that det(2^-k A) lies in [1, 8): first the largest entry is scaled
+/// into [1, 2) (so the determinant neither overflows nor underflows for any
+/// cond below ~1e300), then its determinant's exponent is divided by three.
+/// Throws DomainError if A is not finite or det A <= 0.
+int normalisingExponent(const Eigen::Matrix3d& a, const char* function) {
+  if (!a.allFinite()) throwNotPositive(function, a.determinant());
+  const double largest = a.cwiseAbs().maxCoeff();
+  if (!(largest > 0.0)) throwNotPositive(function, 0.0);
+  const int e1 = std::ilogb(largest);
+  const double det1 = core_detail::timesPowerOfTwo(a, -e1).determinant();
+  if (!(det1 > 0.0)) throwNotPositive(function, std::ldexp(det1, 3 * e1));
+  return e1 + core_detail::floorDivide3(std::ilogb(det1));
+}
+
+bool unscaledDet(double det) {
+  return det >= polar_detail::kUnscaledMinDet && det <= polar_detail::kUnscaledMaxDet;
+}
+
 }  // namespace
 
 PolarDecomposition polarDecompose(const Eigen::Matrix3d& a) {
   const double detA = a.determinant();
-  if (!a.allFinite() || !(detA > 0.0)) {
-    std::ostringstream msg;
-    msg << "polarDecompose: det A = " << detA
-        << " is not positive (or A is not finite); Aff+(3) needs det > 0 - the map"
-           " flattens or mirrors the element";
-    throw DomainError(msg.str());
+  if (!unscaledDet(detA)) {
+    const int k = normalisingExponent(a, "polarDecompose");
+    PolarDecomposition result = polarDecompose(core_detail::timesPowerOfTwo(a, -k));
+    result.stretch = core_detail::timesPowerOfTwo(result.stretch, k);
+    return result;
   }
   Eigen::Matrix3d x = a;
   bool scaled = true;
+  double xNorm = frobeniusNorm(x);
   for (int iteration = 0; iteration < kNewtonMaxIterations; ++iteration) {
+    if (xNorm > kNewtonRescaleNorm) {
+      const int k = std::ilogb(xNorm);
+      x = core_detail::timesPowerOfTwo(x, -k);
+      xNorm = std::ldexp(xNorm, -k);
+    }
     const Eigen::Matrix3d cof = cofactor(x);
     const double det = x.col(0).dot(cof.col(0));
     if (!(det > 0.0)) break;
     double g = 1.0;
-    if (scaled) g = std::sqrt(cof.norm() / (det * x.norm()));
+    if (scaled) g = std::sqrt(frobeniusNorm(cof) / (det * xNorm));
     const Eigen::Matrix3d next = 0.5 * (g * x + cof / (g * det));
-    const double step = (next - x).norm() / next.norm();
+    const double nextNorm = frobeniusNorm(next);
+    const double step = frobeniusNorm(next - x) / nextNorm;
     x = next;
+    xNorm = nextNorm;
     if (step < kNewtonStopStep) {
       PolarDecomposition result;
       result.rotation = x;
@@ -139,11 +185,14 @@ bool polarLogClosedForm(const Eigen::Matrix3d& a, PolarLogDecomposition& out) {
 }  // namespace polar_detail
 
 PolarLogDecomposition polarDecomposeLog(const Eigen::Matrix3d& a) {
-  const double detA = a.determinant();
-  if (a.allFinite() && detA > 0.0) {
-    PolarLogDecomposition fast;
-    if (polar_detail::polarLogClosedForm(a, fast)) return fast;
+  if (!unscaledDet(a.determinant())) {
+    const int k = normalisingExponent(a, "polarDecomposeLog");
+    PolarLogDecomposition result = polarDecomposeLog(core_detail::timesPowerOfTwo(a, -k));
+    result.stretchLog.diagonal().array() += k * core_detail::kLn2;
+    return result;
   }
+  PolarLogDecomposition fast;
+  if (polar_detail::polarLogClosedForm(a, fast)) return fast;
   const PolarDecomposition polar = polarDecompose(a);
   return {polar.rotation, symLog(polar.stretch)};
 }

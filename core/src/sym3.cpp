@@ -4,8 +4,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
+#include "power_of_two.h"
 #include "tetblend/core/error.h"
 
 namespace tetblend {
@@ -29,18 +31,124 @@ double expDivided(double x) { return x == 0.0 ? 1.0 : std::expm1(x) / x; }
 /// First divided difference of log at (1, 1 + x): log1p(x)/x.
 double logDivided(double x) { return x == 0.0 ? 1.0 : std::log1p(x) / x; }
 
-Eigen::Matrix3d symLogByEigenDecomposition(const Eigen::Matrix3d& s) {
-  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es(s);
-  const Eigen::Vector3d mu = es.eigenvalues();
-  if (es.info() != Eigen::Success || !(mu.minCoeff() > 0.0)) {
+/// The symmetric matrix whose upper triangle and diagonal are those of y.
+Eigen::Matrix3d fromUpper(const Eigen::Matrix3d& y) {
+  Eigen::Matrix3d m = y;
+  m(1, 0) = y(0, 1);
+  m(2, 0) = y(0, 2);
+  m(2, 1) = y(1, 2);
+  return m;
+}
+
+/// symExp outside the closed form's range: V exp(Lambda - lambda_max) V^T,
+/// multiplied by e^(lambda_max / 2) twice so that neither factor overflows
+/// while the product is representable.
+Eigen::Matrix3d symExpByEigenDecomposition(const Eigen::Matrix3d& y) {
+  if (!y.allFinite()) throw DomainError("symExp: matrix has a non-finite entry");
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es(fromUpper(y));
+  const Eigen::Vector3d mu = es.eigenvalues();  // ascending
+  const double top = mu(2);
+  // The largest diagonal entry of exp(Y) is at least e^top / 3.
+  const double kOverflowArg = std::log(std::numeric_limits<double>::max()) + std::log(3.0);
+  if (es.info() != Eigen::Success || !(top <= kOverflowArg)) {
     std::ostringstream msg;
-    msg << "symLog: matrix is not symmetric positive definite (smallest eigenvalue "
-        << mu.minCoeff() << "); the logarithm of a stretch needs S > 0";
+    msg << "symExp: largest eigenvalue " << top
+        << " of the symmetric matrix; its exponential overflows double (the largest"
+           " representable is e^709.78)";
     throw DomainError(msg.str());
   }
   const Eigen::Matrix3d& v = es.eigenvectors();
+  const Eigen::Vector3d e = (mu.array() - top).exp().matrix();
+  const double half = std::exp(0.5 * top);
+  const Eigen::Matrix3d unit = v * e.asDiagonal() * v.transpose();  // exp(Y - top I)
+  const Eigen::Matrix3d r = ((0.5 * (unit + unit.transpose())) * half) * half;
+  if (!r.allFinite()) {
+    std::ostringstream msg;
+    msg << "symExp: largest eigenvalue " << top
+        << " of the symmetric matrix; an entry of its exponential overflows double";
+    throw DomainError(msg.str());
+  }
+  return r;
+}
+
+[[noreturn]] void throwNotPositiveDefinite(double smallest) {
+  std::ostringstream msg;
+  msg << "symLog: matrix is not symmetric positive definite (smallest eigenvalue " << smallest
+      << "); the logarithm of a stretch needs S > 0";
+  throw DomainError(msg.str());
+}
+
+using Matrix3ld = Eigen::Matrix<long double, 3, 3>;
+
+/// Sweeps of cyclic Jacobi: convergence is quadratic once the off-diagonal
+/// is below the eigenvalue gaps; a 3x3 matrix needs 4 to 6.
+constexpr int kJacobiMaxSweeps = 12;
+
+/// V log(Lambda) V^T in long double by cyclic Jacobi rotations (Golub & Van
+/// Loan, Alg. 8.5.3), with the relative stopping test |a_pq| <= eps
+/// sqrt(a_pp a_qq) of Demmel and Veselic, which keeps small eigenvalues of a
+/// positive definite matrix to relative accuracy.
+Eigen::Matrix3d symLogByLongDoubleJacobi(const Eigen::Matrix3d& s) {
+  using std::abs;
+  using std::sqrt;
+  const long double eps = std::numeric_limits<long double>::epsilon();
+  Matrix3ld a = fromUpper(s).cast<long double>();
+  Matrix3ld v = Matrix3ld::Identity();
+  for (int sweep = 0; sweep < kJacobiMaxSweeps; ++sweep) {
+    bool rotated = false;
+    for (int p = 0; p < 2; ++p) {
+      for (int q = p + 1; q < 3; ++q) {
+        const long double apq = a(p, q);
+        if (!(abs(apq) > eps * sqrt(abs(a(p, p) * a(q, q))))) continue;
+        rotated = true;
+        const long double tau = (a(q, q) - a(p, p)) / (2 * apq);
+        const long double t = (tau >= 0 ? 1 : -1) / (abs(tau) + sqrt(1 + tau * tau));
+        const long double c = 1 / sqrt(1 + t * t), sn = t * c;
+        for (int k = 0; k < 3; ++k) {  // A <- A J
+          const long double akp = a(k, p), akq = a(k, q);
+          a(k, p) = c * akp - sn * akq;
+          a(k, q) = sn * akp + c * akq;
+        }
+        for (int k = 0; k < 3; ++k) {  // A <- J^T A
+          const long double apk = a(p, k), aqk = a(q, k);
+          a(p, k) = c * apk - sn * aqk;
+          a(q, k) = sn * apk + c * aqk;
+        }
+        for (int k = 0; k < 3; ++k) {  // V <- V J
+          const long double vkp = v(k, p), vkq = v(k, q);
+          v(k, p) = c * vkp - sn * vkq;
+          v(k, q) = sn * vkp + c * vkq;
+        }
+      }
+    }
+    if (!rotated) break;
+  }
+  const Eigen::Matrix<long double, 3, 1> mu = a.diagonal();
+  if (!(mu.minCoeff() > 0)) throwNotPositiveDefinite(static_cast<double>(mu.minCoeff()));
+  const Matrix3ld r = v * mu.array().log().matrix().asDiagonal() * v.transpose();
+  return (0.5L * (r + r.transpose())).cast<double>();
+}
+
+Eigen::Matrix3d symLogByEigenDecomposition(const Eigen::Matrix3d& s) {
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es(s);
+  const Eigen::Vector3d mu = es.eigenvalues();  // ascending
+  if (es.info() == Eigen::Success && !(mu(0) >= sym3_detail::kLogLongDoubleMinRatio * mu(2))) {
+    return symLogByLongDoubleJacobi(s);
+  }
+  if (es.info() != Eigen::Success || !(mu(0) > 0.0)) throwNotPositiveDefinite(mu.minCoeff());
+  const Eigen::Matrix3d& v = es.eigenvectors();
   const Eigen::Matrix3d r = v * mu.array().log().matrix().asDiagonal() * v.transpose();
   return 0.5 * (r + r.transpose());
+}
+
+/// symLog of S whose largest diagonal entry d is outside the unscaled range:
+/// log(S) = log(2^-k S) + k ln 2 I with k = ilogb(d), exact scaling.
+Eigen::Matrix3d symLogRescaled(const Eigen::Matrix3d& s, double d) {
+  if (!(d > 0.0)) throwNotPositiveDefinite(d);  // some diagonal entry of S > 0 is <= 0
+  const int k = std::ilogb(d);
+  Eigen::Matrix3d r = symLog(core_detail::timesPowerOfTwo(s, -k));
+  r.diagonal().array() += k * core_detail::kLn2;
+  return r;
 }
 
 }  // namespace
@@ -88,6 +196,11 @@ Eigen::Matrix3d symExp(const Eigen::Matrix3d& y) {
   const double l1 = lambda(0) - lambda(1);  // >= 0
   const double l3 = lambda(2) - lambda(1);  // <= 0
   const double h = l1 - l3;
+  // Negated so that NaN (entries beyond ~1e154 overflow the cubic) also leaves.
+  if (!(std::max(std::abs(lambda(0)), std::abs(lambda(2))) <= sym3_detail::kExpDirectMaxArg &&
+        h <= sym3_detail::kExpDirectMaxArg)) {
+    return symExpByEigenDecomposition(y);
+  }
   // Newton form of the interpolating quadratic at the nodes (0, l1, l3) of
   // exp(x + lambda2): exp(Y) = e^lambda2 (I + b Z + c Z^2), Z = Y - lambda2 I,
   // with c = exp[0, l1, l3] and b = exp[0, l1] - l1 c (eq. (4)).
@@ -114,6 +227,10 @@ Eigen::Matrix3d symExp(const Eigen::Matrix3d& y) {
 
 Eigen::Matrix3d symLog(const Eigen::Matrix3d& s) {
   if (!s.allFinite()) throw DomainError("symLog: matrix has a non-finite entry");
+  const double d = std::max({s(0, 0), s(1, 1), s(2, 2)});
+  if (!(d >= sym3_detail::kLogUnscaledMin && d <= sym3_detail::kLogUnscaledMax)) {
+    return symLogRescaled(s, d);
+  }
   const Eigen::Vector3d mu = symEigenvalues(s);
   if (!(mu(2) > 0.0) || mu(0) > sym3_detail::kLogClosedFormMaxCond * mu(2)) {
     return symLogByEigenDecomposition(s);

@@ -58,9 +58,11 @@ Eigen::Matrix3d withEigenvalues(std::mt19937& rng, const Eigen::Vector3d& values
   return v * values.asDiagonal() * v.transpose();
 }
 
+/// |batched - scalar| / (1 + |scalar|), Frobenius (stableNorm: results may be
+/// near the ends of the double range).
 template <typename A, typename B>
 double relativeGap(const A& batched, const B& scalar) {
-  return (batched - scalar).norm() / (1.0 + scalar.norm());
+  return (batched - scalar).stableNorm() / (1.0 + scalar.stableNorm());
 }
 
 TEST(BatchKernels, So3LogMatchesScalar) {
@@ -239,6 +241,83 @@ TEST(BatchKernels, PolarDecomposeLogMatchesScalarAndThrowsLikeIt) {
   }
   in[in.size() - 3] = Eigen::Vector3d(1.0, 1.0, -1.0).asDiagonal();
   EXPECT_THROW(polarDecomposeLogBatch(in.data(), out.data(), in.size()), DomainError);
+}
+
+/// kBatchVsScalarTol plus the relative error exp makes of the rounding of its
+/// argument, a few ulps of the largest |eigenvalue| (lanes and libm round
+/// eigenvalues near 700 differently).
+double extremeTol(const Eigen::Matrix3d& y) {
+  constexpr double kExpArgumentUlps = 4 * 2.220446049250313e-16;
+  const double largest = symEigenvalues(y).cwiseAbs().maxCoeff();
+  return kBatchVsScalarTol + kExpArgumentUlps * (std::isfinite(largest) ? largest : 0.0);
+}
+
+TEST(BatchKernels, ExtremeSpreadsAndScalesMatchScalar) {
+  // Issue 14: inputs outside the closed forms' ranges (eigenvalue spread or
+  // |eigenvalue| beyond kExpDirectMaxArg, det or diagonal outside the
+  // unscaled ranges) are handed to the scalar kernels, which return finite
+  // results; batched and scalar agree element by element, and overflow throws
+  // from both.
+  std::mt19937 rng(seed("ExtremeSpreadsAndScalesMatchScalar"));
+  const double m = sym3_detail::kExpDirectMaxArg;
+  std::vector<Eigen::Matrix3d> y = {Eigen::Vector3d(356, -356, -356).asDiagonal()};
+  for (const Eigen::Vector3d& mu :
+       {Eigen::Vector3d(356, -356, -356), Eigen::Vector3d(0.999 * m, 0, -0.5),
+        Eigen::Vector3d(1.001 * m, 0, -0.5), Eigen::Vector3d(0.3, 0.0, -1.001 * m),
+        Eigen::Vector3d(1.0, 0.0, -1e6)}) {
+    y.push_back(withEigenvalues(rng, mu));
+  }
+  for (int i = 0; i < 100; ++i) y.push_back(randomSymmetric(rng, 1.0));
+  std::vector<Eigen::Matrix3d> e(y.size());
+  symExpBatch(y.data(), e.data(), y.size());
+  std::vector<AffineParams> params;
+  for (std::size_t i = 0; i < y.size(); ++i) {
+    ASSERT_TRUE(e[i].allFinite()) << "element " << i;
+    EXPECT_LE(relativeGap(e[i], symExp(y[i])), extremeTol(y[i])) << "element " << i;
+    // Every other rotation log beyond the double range of its square.
+    params.push_back({Eigen::Vector3d::Zero(), Eigen::Vector3d(i % 2 ? 1e155 : 0.5, 0.0, 0.0), y[i]});
+  }
+  std::vector<Eigen::Matrix4d> a(params.size());
+  phiBatch(params.data(), a.data(), params.size());
+  for (std::size_t i = 0; i < params.size(); ++i) {
+    ASSERT_TRUE(a[i].allFinite()) << "element " << i;
+    EXPECT_LE(relativeGap(a[i], phi(params[i])), extremeTol(y[i]))
+        << "element " << i;
+  }
+  y[y.size() / 2] = Eigen::Vector3d(720, 0, 0).asDiagonal();
+  EXPECT_THROW(symExpBatch(y.data(), e.data(), y.size()), DomainError);
+
+  // Scaled matrices: det(c A) far outside the unscaled range for the outer
+  // scales, inside it for c near 1.
+  std::vector<Eigen::Matrix3d> linear;
+  std::vector<Eigen::Matrix3d> stretch;
+  for (int j = -300; j <= 300; j += 25) {
+    const double c = std::pow(10.0, j);
+    linear.push_back(c * withEigenvalues(rng, Eigen::Vector3d(3.0, 1.0, 1.0)));
+    linear.push_back(c * randomRotation(rng, M_PI) * withEigenvalues(rng, Eigen::Vector3d(2, 1, 0.1)));
+    stretch.push_back(c * withEigenvalues(rng, Eigen::Vector3d(3.0, 1.0, 0.5)));
+  }
+  linear.push_back(Eigen::Vector3d(1.0, 1.0, 1e-310).asDiagonal());
+  std::vector<PolarLogDecomposition> polar(linear.size());
+  polarDecomposeLogBatch(linear.data(), polar.data(), linear.size());
+  std::vector<Eigen::Matrix4d> homogeneous;
+  for (std::size_t i = 0; i < linear.size(); ++i) {
+    const PolarLogDecomposition want = polarDecomposeLog(linear[i]);
+    EXPECT_LE(relativeGap(polar[i].rotation, want.rotation), kBatchVsScalarTol) << "element " << i;
+    EXPECT_LE(relativeGap(polar[i].stretchLog, want.stretchLog), kBatchVsScalarTol)
+        << "element " << i;
+    homogeneous.push_back(affine(linear[i]));
+  }
+  std::vector<AffineParams> out(homogeneous.size());
+  psiBatch(homogeneous.data(), out.data(), homogeneous.size());
+  for (std::size_t i = 0; i < homogeneous.size(); ++i) {
+    expectParamsClose(out[i], psi(homogeneous[i]), i);
+  }
+  std::vector<Eigen::Matrix3d> logs(stretch.size());
+  symLogBatch(stretch.data(), logs.data(), stretch.size());
+  for (std::size_t i = 0; i < stretch.size(); ++i) {
+    EXPECT_LE(relativeGap(logs[i], symLog(stretch[i])), kBatchVsScalarTol) << "element " << i;
+  }
 }
 
 TEST(BatchKernels, PhiPsiRoundTripByConditionBand) {

@@ -58,9 +58,10 @@ inline Eigen::Matrix3d spdWithEigenvalues(std::mt19937& rng, const Eigen::Vector
   return 0.5 * (s + s.transpose());
 }
 
-/// Relative Frobenius distance |a - b| / |b|.
+/// Relative Frobenius distance |a - b| / |b| (stableNorm: entries may be
+/// near the ends of the double range).
 inline double relativeError(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b) {
-  return (a - b).norm() / b.norm();
+  return (a - b).stableNorm() / b.stableNorm();
 }
 
 }  // namespace tetblend::core_test

@@ -4,6 +4,7 @@
 
 #include <unsupported/Eigen/MatrixFunctions>
 
+#include <limits>
 #include <vector>
 
 #include "core_test_support.h"
@@ -27,6 +28,15 @@ constexpr double kPi = 3.14159265358979323846;
 constexpr double kRoundTripTolCond1e2 = 1e-13;
 constexpr double kRoundTripTolCond1e4 = 1e-11;
 constexpr double kRoundTripTolCond1e8 = 1e-7;
+// phi(psi(c A)) = c A for cond(A) <= 1e2 and any scale c the double range
+// holds: the unit-scale band kRoundTripTolCond1e2 plus this many ulps of
+// |log c|, since the stretch log holds log c rounded (ulp(700) = 1.1e-13
+// absolute, which exp turns into a relative error) and adds it in a few
+// roundings (k ln 2, the diagonal, the eigenvalues' mean).
+constexpr double kLogScaleUlps = 8 * 2.220446049250313e-16;
+// psi(c A) - log(c) I against psi(A), relative to |log S| (both hold log c
+// rounded to its ulp, ~1e-16 relative) plus the cond-1e2 closed-form band.
+constexpr double kScaleInvarianceTol = 1e-13;
 // Parameter-space and group-property checks on unit-scale data.
 constexpr double kParamTol = 1e-12;
 // Fréchet iterations stop at |W| <= 1e-12; the fixed point is that close.
@@ -132,6 +142,81 @@ TEST(KajiOchiai, PsiThrowsForNonPositiveDeterminant) {
   EXPECT_THROW(
       psi(affine(-Eigen::Matrix3d::Identity(), Eigen::Vector3d::Zero()), Eigen::Vector3d::Zero()),
       DomainError);
+}
+
+TEST(KajiOchiai, PsiRejectsANonFiniteReference) {
+  // Regression (issue 14): a NaN reference gave a NaN rotation log.
+  const Eigen::Matrix4d a = affine(so3Exp(Eigen::Vector3d(0.1, 0.2, 0.3)), Eigen::Vector3d::Zero());
+  for (const double bad : {std::nan(""), std::numeric_limits<double>::infinity()}) {
+    try {
+      psi(a, Eigen::Vector3d(0.0, bad, 0.0));
+      ADD_FAILURE() << "no error for reference component " << bad;
+    } catch (const InputError& error) {
+      EXPECT_NE(std::string(error.what()).find("reference"), std::string::npos) << error.what();
+    }
+  }
+}
+
+/// psi(c A) = psi(A) + (0, 0, log(c) I) and phi(psi(c A)) = c A, checked for
+/// the linear part scaled by c (the translation is carried unchanged).
+void expectScaleInvariance(const Eigen::Matrix3d& linear, double c, double tol) {
+  const Eigen::Vector3d t(1, -2, 3);
+  const AffineParams base = psi(affine(linear, t));
+  const Eigen::Matrix4d scaled = affine(c * linear, t);
+  AffineParams p;
+  ASSERT_NO_THROW(p = psi(scaled)) << "c = " << c << ", A =\n" << linear;
+  const double logC = std::log(c);
+  Eigen::Matrix3d expected = base.stretchLog;
+  expected.diagonal().array() += logC;
+  // The stretch log holds log c, whose ulp (up to 1.1e-13 at |log c| ~ 700)
+  // bounds what any method can return: relative to |log S|.
+  ASSERT_LE((p.stretchLog - expected).norm(), tol * (1.0 + expected.norm())) << "c = " << c;
+  ASSERT_LE((p.rotationLog - base.rotationLog).norm(), tol) << "c = " << c;
+  const Eigen::Matrix4d back = phi(p);
+  ASSERT_TRUE(back.allFinite()) << "c = " << c;
+  ASSERT_LE(relativeError(back.topLeftCorner<3, 3>(), scaled.topLeftCorner<3, 3>()),
+            kRoundTripTolCond1e2 + kLogScaleUlps * std::abs(logC))
+      << "c = " << c << ", A =\n"
+      << linear;
+  ASSERT_EQ(p.translation, t);
+}
+
+TEST(KajiOchiai, PsiAndPhiAreExactAtEveryScale) {
+  // Regression (issue 14): psi(c A) threw NumericalError for c = 1e77 and
+  // 1e-82 on a cond-3 matrix. Scale must never matter: a sweep over the
+  // whole double range on fixed and seeded matrices of cond <= 1e2.
+  const Eigen::Vector3d axis = Eigen::Vector3d(1, 2, -2).normalized();
+  std::vector<Eigen::Matrix3d> matrices = {
+      Eigen::Matrix3d::Identity(), Eigen::Vector3d(3, 1, 1).asDiagonal(),
+      so3Exp(2.0 * axis) * Eigen::Vector3d(1.5, 1.0, 0.5).asDiagonal(),
+      so3Exp((kPi - 1e-9) * axis) * Eigen::Vector3d(1e2, 1.0, 1.0).asDiagonal()};
+  std::mt19937 rng(testSeed("KajiOchiai.PsiAndPhiAreExactAtEveryScale"));
+  for (int i = 0; i < 6; ++i) matrices.push_back(randomMatrixWithCond(rng, i < 3 ? 3.0 : 1e2));
+  for (const Eigen::Matrix3d& linear : matrices) {
+    for (int j = -300; j <= 300; j += 10) {
+      expectScaleInvariance(linear, std::pow(10.0, j), kScaleInvarianceTol);
+    }
+    for (const double c : {1e77, 1e-82, 1e-305, 1e305}) {
+      expectScaleInvariance(linear, c, kScaleInvarianceTol);
+    }
+  }
+}
+
+TEST(KajiOchiai, PsiOfExtremeConditionWithSubnormalDeterminant) {
+  // Regression (issue 14): psi(diag(1, 1, 1e-310)) threw NumericalError; the
+  // determinant is subnormal and the inverse overflows unless rescaled.
+  const AffineParams p =
+      psi(affine(Eigen::Vector3d(1, 1, 1e-310).asDiagonal(), Eigen::Vector3d::Zero()));
+  EXPECT_LE(p.rotationLog.norm(), kParamTol);
+  const Eigen::Matrix3d expected = Eigen::Vector3d(0, 0, std::log(1e-310)).asDiagonal();
+  EXPECT_LE((p.stretchLog - expected).norm(), kScaleInvarianceTol * expected.norm());
+  // Normwise round trip (the subnormal entry itself is below the normwise
+  // round-off of the unit entries).
+  const Eigen::Matrix4d back = phi(p);
+  ASSERT_TRUE(back.allFinite());
+  EXPECT_LE(relativeError(back, affine(Eigen::Vector3d(1, 1, 1e-310).asDiagonal(),
+                                       Eigen::Vector3d::Zero())),
+            kParamTol);
 }
 
 TEST(KajiOchiai, ConsistentLogKeepsAFourPiTwist) {

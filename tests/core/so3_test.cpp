@@ -4,9 +4,11 @@
 
 #include <unsupported/Eigen/MatrixFunctions>
 
+#include <limits>
 #include <vector>
 
 #include "core_test_support.h"
+#include "tetblend/core/error.h"
 
 namespace tetblend {
 namespace {
@@ -144,6 +146,70 @@ TEST(So3, LogClosestOfIdentityLiesOnTheNearestSphere) {
             Eigen::Vector3d::Zero());
   EXPECT_EQ(so3LogClosest(Eigen::Matrix3d::Identity(), Eigen::Vector3d(0, 1, 0)),
             Eigen::Vector3d::Zero());
+}
+
+void expectRotation(const Eigen::Matrix3d& r) {
+  ASSERT_TRUE(r.allFinite()) << r;
+  EXPECT_LE((r.transpose() * r - Eigen::Matrix3d::Identity()).norm(), kRoundTripTol);
+  EXPECT_NEAR(r.determinant(), 1.0, kRoundTripTol);
+}
+
+TEST(So3, ExpOfHugeAngleIsTheRotationOfTheReducedAngle) {
+  // Regression (issue 14): |omega|^2 overflowed for |omega| > ~1.3e154 and
+  // so3Exp((1e155, 0, 0)) returned NaN. The rotation depends on the angle
+  // modulo 2 pi only; std::cos/std::sin of the double angle are the oracle.
+  for (const double angle : {1e155, -1e155, 3e200, 1e308}) {
+    SCOPED_TRACE(testing::Message() << "angle " << angle);
+    const Eigen::Matrix3d r = so3Exp(Eigen::Vector3d(angle, 0.0, 0.0));
+    expectRotation(r);
+    Eigen::Matrix3d oracle = Eigen::Matrix3d::Identity();
+    oracle.bottomRightCorner<2, 2>() << std::cos(angle), -std::sin(angle), std::sin(angle),
+        std::cos(angle);
+    EXPECT_LE((r - oracle).norm(), kRoundTripTol);
+  }
+  // Norms beyond the double range: the axis stays fixed.
+  const double big = std::numeric_limits<double>::max();
+  for (const Eigen::Vector3d& w :
+       {Eigen::Vector3d(1e155, 1e155, -1e155), Eigen::Vector3d(big, big, 0.0),
+        Eigen::Vector3d(big, -big, big), Eigen::Vector3d(1e300, 1e-300, 0.0)}) {
+    SCOPED_TRACE(testing::Message() << "omega " << w.transpose());
+    const Eigen::Matrix3d r = so3Exp(w);
+    expectRotation(r);
+    const Eigen::Vector3d axis = (w / w.cwiseAbs().maxCoeff()).normalized();
+    EXPECT_LE((r * axis - axis).norm(), kRoundTripTol);
+  }
+}
+
+TEST(So3, HugeAngleFormulaMatchesRodriguesAtModerateAngles) {
+  // The huge-angle branch (unit axis, half-angle sine and cosine) is the same
+  // formula as the main branch; check it where both apply, below and above pi.
+  for (const Eigen::Vector3d& axis : hardAxes()) {
+    for (const double angle : {1e-3, 1.0, 3.0, kPi, 20.0, 1e5}) {
+      const Eigen::Vector3d w = angle * axis;
+      EXPECT_LE((so3_detail::so3ExpHugeAngle(w) - so3Exp(w)).norm(),
+                kOracleTolPerRadian * (1.0 + angle))
+          << "angle " << angle << " axis " << axis.transpose();
+    }
+  }
+}
+
+TEST(So3, LogCheckedRefusesNonRotations) {
+  // Regression (issue 14): so3Log(0) and so3Log(1e-150 I) return (pi, 0, 0);
+  // the checked variant refuses what is not a rotation.
+  const Eigen::Matrix3d rotation = so3Exp(Eigen::Vector3d(0.3, -1.2, 2.0));
+  Eigen::Matrix3d nan = rotation;
+  nan(1, 2) = std::nan("");
+  for (const Eigen::Matrix3d& m :
+       {Eigen::Matrix3d(Eigen::Matrix3d::Zero()), Eigen::Matrix3d(1e-150 * Eigen::Matrix3d::Identity()),
+        Eigen::Matrix3d(Eigen::Vector3d(1, 1, -1).asDiagonal()), Eigen::Matrix3d(1.01 * rotation),
+        Eigen::Matrix3d(-rotation), nan}) {
+    EXPECT_THROW(so3LogChecked(m), DomainError) << m;
+  }
+  EXPECT_EQ(so3LogChecked(rotation), so3Log(rotation));
+  // A rotation written with 7 significant digits passes the default tolerance.
+  const Eigen::Matrix3d rounded = (rotation * 1e7).array().round() / 1e7;
+  EXPECT_NO_THROW(so3LogChecked(rounded));
+  EXPECT_THROW(so3LogChecked(rounded, 1e-12), DomainError);
 }
 
 }  // namespace

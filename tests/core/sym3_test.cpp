@@ -5,6 +5,7 @@
 #include <Eigen/Eigenvalues>
 #include <unsupported/Eigen/MatrixFunctions>
 
+#include <limits>
 #include <vector>
 
 #include "core_test_support.h"
@@ -204,6 +205,117 @@ TEST(Sym3, LogRejectsNonPositiveDefinite) {
   Eigen::Matrix3d nan = Eigen::Matrix3d::Identity();
   nan(1, 2) = nan(2, 1) = std::nan("");
   EXPECT_THROW(symLog(nan), DomainError);
+}
+
+TEST(Sym3, ExpOfWideSpreadIsFinite) {
+  // Regression (issue 14): symExp(diag(356, -356, -356)) returned NaN
+  // (expm1 of the spread 712 overflowed) although exp(Y) ~ 4e154 is finite.
+  const Eigen::Vector3d mu(356, -356, -356);
+  const Eigen::Matrix3d diag = symExp(mu.asDiagonal().toDenseMatrix());
+  EXPECT_LE(relativeError(diag, mu.array().exp().matrix().asDiagonal().toDenseMatrix()),
+            kTolPerSpread);
+  // Rotated, and both sides of kExpDirectMaxArg (for the spread and for the
+  // largest |eigenvalue|), against the construction.
+  const double m = sym3_detail::kExpDirectMaxArg;
+  std::mt19937 rng(testSeed("Sym3.ExpOfWideSpreadIsFinite"));
+  for (const Eigen::Vector3d& spectrum :
+       {mu, Eigen::Vector3d(356, 0, -356), Eigen::Vector3d(0.999 * m, 0, -0.5),
+        Eigen::Vector3d(1.001 * m, 0, -0.5), Eigen::Vector3d(0.5, 0, -0.999 * m),
+        Eigen::Vector3d(0.5, 0, -1.001 * m), Eigen::Vector3d(705, 704, 700),
+        Eigen::Vector3d(-701, -705, -706), Eigen::Vector3d(1.0, 0.0, -1e6)}) {
+    const SymCase c{randomRotation(rng), spectrum};
+    const Eigen::Matrix3d y = 0.5 * (c.matrix() + c.matrix().transpose());
+    const Eigen::Matrix3d e = symExp(y);
+    SCOPED_TRACE(testing::Message() << "eigenvalues " << spectrum.transpose());
+    ASSERT_TRUE(e.allFinite());
+    // The construction's round-off in Y is ~eps |Y|, which exp turns into a
+    // relative error of the same size: the spread bound plus |Y|.
+    const double size = spread(spectrum) + spectrum.cwiseAbs().maxCoeff();
+    EXPECT_LE(relativeError(e, c.exp()), kTolPerSpread * (1.0 + size));
+  }
+  // Entries far beyond the cubic's range (its p^2 overflows).
+  const Eigen::Vector3d huge(1.0, 1.0, -1e300);
+  EXPECT_LE(relativeError(symExp(huge.asDiagonal().toDenseMatrix()),
+                          huge.array().exp().matrix().asDiagonal().toDenseMatrix()),
+            kTolPerSpread);
+}
+
+TEST(Sym3, ExpNearOverflowIsFiniteAndAboveItThrows) {
+  // e^710.5 overflows double but exp(710.5 u u^T) = I + (e^710.5 - 1) u u^T,
+  // u = (1, 1, 1)/sqrt 3, has entries ~1.2e308: finite, so returned.
+  const Eigen::Matrix3d y = Eigen::Matrix3d::Constant(710.5 / 3.0);
+  const Eigen::Matrix3d e = symExp(y);
+  ASSERT_TRUE(e.allFinite());
+  const double entry = std::exp(710.5 - std::log(3.0));
+  Eigen::Matrix3d oracle = Eigen::Matrix3d::Constant(entry);
+  oracle.diagonal().array() += 1.0;
+  EXPECT_LE(relativeError(e, oracle), kTolPerSpread * 710.5);
+  // A true result beyond the double range raises, naming the eigenvalue.
+  for (const double top : {710.0, 720.0, 1e300}) {
+    try {
+      symExp(Eigen::Vector3d(top, 0, -1).asDiagonal().toDenseMatrix());
+      ADD_FAILURE() << "no error for eigenvalue " << top;
+    } catch (const DomainError& error) {
+      EXPECT_NE(std::string(error.what()).find("largest eigenvalue"), std::string::npos)
+          << error.what();
+    }
+  }
+  EXPECT_THROW(symExp(Eigen::Matrix3d::Constant(std::numeric_limits<double>::infinity())),
+               DomainError);
+}
+
+TEST(Sym3, LogHandlesConditionUpTo1e15) {
+  // Regression (issue 14): symLog refused 11% of positive definite matrices
+  // at cond 1e16 (double eigenvalues of either sign). At cond 1e15 every
+  // sample is accepted and matches Eigen's solver run in long double on the
+  // same (rounded) matrix. The smallest eigenvalue of the stored matrix is
+  // determined to ~eps_ld cond ~ 1e-4 relative by either long double method,
+  // so its log agrees to that, absolutely; a 10x margin.
+  constexpr double kLongDoubleLogTol = 1e-3;
+  using Matrix3ld = Eigen::Matrix<long double, 3, 3>;
+  std::mt19937 rng(testSeed("Sym3.LogHandlesConditionUpTo1e15"));
+  for (const double cond : {1e9, 1e12, 1e15}) {
+    for (int i = 0; i < 200; ++i) {
+      const double mid = std::exp(uniform(rng, -std::log(cond), 0.0));
+      const Eigen::Matrix3d s = spdWithEigenvalues(rng, Eigen::Vector3d(1.0, mid, 1.0 / cond));
+      const Eigen::SelfAdjointEigenSolver<Matrix3ld> es(s.cast<long double>());
+      ASSERT_GT(es.eigenvalues()(0), 0.0L) << "the stored matrix is not positive definite";
+      const Matrix3ld oracle = es.eigenvectors() *
+                               es.eigenvalues().array().log().matrix().asDiagonal() *
+                               es.eigenvectors().transpose();
+      Eigen::Matrix3d log;
+      ASSERT_NO_THROW(log = symLog(s)) << "cond " << cond << "\n" << s;
+      ASSERT_LE((log - oracle.cast<double>()).norm(), kLongDoubleLogTol) << "cond " << cond;
+      const double h = std::log(cond);
+      ASSERT_LE(relativeError(symExp(log), s), kTolPerSpread * (1.0 + h)) << "cond " << cond;
+    }
+  }
+}
+
+TEST(Sym3, LogIsExactAtEveryScale) {
+  // log(c S) = log(S) + log(c) I for any c the double range holds (S is
+  // rescaled by a power of two first). Absolute error: a few ulps of
+  // |log c| <= 709 (ulp 1.1e-13), on top of the unit-scale tolerance.
+  constexpr double kLogUlpsOfScale = 8 * std::numeric_limits<double>::epsilon();
+  std::mt19937 rng(testSeed("Sym3.LogIsExactAtEveryScale"));
+  for (int i = 0; i < 5; ++i) {
+    const double mid = std::exp(uniform(rng, -std::log(1e2), 0.0));
+    const Eigen::Matrix3d s = spdWithEigenvalues(rng, Eigen::Vector3d(1.0, mid, 1e-2));
+    const Eigen::Matrix3d log = symLog(s);
+    for (int j = -300; j <= 300; j += 10) {
+      const double c = std::pow(10.0, j);
+      Eigen::Matrix3d expected = log;
+      expected.diagonal().array() += std::log(c);
+      const double tol = kTolPerSpread * (1.0 + std::log(1e2)) * 1e2 +
+                         kLogUlpsOfScale * std::abs(std::log(c));
+      ASSERT_LE((symLog(c * s) - expected).norm(), tol) << "c = " << c;
+    }
+  }
+  // Subnormal entries: the smallest positive double on the diagonal.
+  const double tiny = std::numeric_limits<double>::denorm_min();
+  const Eigen::Matrix3d t = symLog(Eigen::Vector3d(tiny, 2 * tiny, 4 * tiny).asDiagonal());
+  EXPECT_NEAR(t(0, 0), std::log(tiny), kLogUlpsOfScale * 745);
+  EXPECT_NEAR(t(2, 2), std::log(tiny) + std::log(4.0), kLogUlpsOfScale * 745);
 }
 
 }  // namespace

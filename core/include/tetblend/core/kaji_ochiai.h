@@ -49,17 +49,22 @@ inline AffineParams operator*(AffineParams a, double s) { return a *= s; }
 
 /// phi(L, X, Y) = L iota(exp(X) exp(Y)) (eq. (2)): 4x4 homogeneous matrix with
 /// top-left block so3Exp(rotationLog) * symExp(stretchLog), last column the
-/// translation, bottom row (0 0 0 1).
+/// translation, bottom row (0 0 0 1). Finite whenever the result is
+/// representable; throws DomainError (from symExp) naming the largest
+/// eigenvalue of the stretch log if it overflows double.
 Eigen::Matrix4d phi(const AffineParams& params);
 
 /// psi(A) = (rho(A), log(R), log(S)) with A_hat = R S the polar decomposition
 /// (eq. (3)); the rotation log is principal (angle in [0, pi]). A is 4x4
-/// homogeneous; its bottom row is not read. Throws DomainError if det A_hat <= 0.
+/// homogeneous; its bottom row is not read. Any scale: psi(c A) = psi(A) +
+/// (0, 0, log(c) I) for every c > 0 the double range holds (polarDecomposeLog
+/// rescales by a power of two). Throws DomainError if det A_hat <= 0.
 AffineParams psi(const Eigen::Matrix4d& a);
 
 /// psi(A) with the rotation log closest to `rotationReference` (Alg. 1), so
 /// that rotations by more than 2 pi stay representable along a chain of
-/// references (neighbouring elements, previous frame).
+/// references (neighbouring elements, previous frame). Throws InputError if
+/// the reference is not finite, DomainError like psi(a).
 AffineParams psi(const Eigen::Matrix4d& a, const Eigen::Vector3d& rotationReference);
 
 /// Weighted sum sum_i w_i p_i in the parameter space (the argument of phi in

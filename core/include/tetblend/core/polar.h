@@ -24,6 +24,9 @@ struct PolarLogDecomposition {
 /// scaling g (Higham, Functions of Matrices, §8.6), which works on A itself
 /// and so keeps the accuracy of near-singular A (cond(A) up to ~1e12) instead
 /// of squaring the condition number through A^T A.
+/// Any scale the double range holds: A with det A outside
+/// [polar_detail::kUnscaledMinDet, kUnscaledMaxDet] is first scaled by a power
+/// of two 2^-k (exactly) to det in [1, 8), and S scaled back by 2^k.
 /// Throws DomainError if det A <= 0 or A is not finite (no reflection is ever
 /// returned), NumericalError if the iteration fails to converge.
 PolarDecomposition polarDecompose(const Eigen::Matrix3d& a);
@@ -32,10 +35,21 @@ PolarDecomposition polarDecompose(const Eigen::Matrix3d& a);
 /// of A; Kaji–Ochiai eq. (3), psi_S). Well-conditioned A (cond <=
 /// polar_detail::kClosedFormMaxCond) takes the closed form of
 /// polar_detail::polarLogClosedForm; otherwise, or if its a-posteriori check
-/// fails, polarDecompose followed by symLog. Same errors as polarDecompose.
+/// fails, polarDecompose followed by symLog. A with det A outside
+/// [polar_detail::kUnscaledMinDet, kUnscaledMaxDet] is decomposed as 2^-k A,
+/// det in [1, 8), and k ln 2 I added to log S: psi_S(c A) = psi_S(A) + log(c) I
+/// holds for every scale the double range holds. Same errors as
+/// polarDecompose.
 PolarLogDecomposition polarDecomposeLog(const Eigen::Matrix3d& a);
 
 namespace polar_detail {
+/// Range of det A that the decompositions take as is. Inside it the closed
+/// form's A^T A and its cubic (fourth powers of A, for cond <= 1e3) and the
+/// Newton iteration's cofactors and inverse (for cond up to ~1e16) stay far
+/// from overflow and underflow; outside it A is rescaled by a power of two.
+/// The batched lanes take the same range.
+constexpr double kUnscaledMinDet = 0x1p-128;
+constexpr double kUnscaledMaxDet = 0x1p+128;
 /// Largest cond(A) = sigma_1/sigma_3 for the closed form: it diagonalises
 /// A^T A, whose smallest eigenvalue carries an absolute error eps sigma_1^2,
 /// i.e. eps cond^2 relative (2e-10 at 1e3). sigma_i = |A v_i| is then only

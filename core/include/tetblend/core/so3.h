@@ -29,6 +29,17 @@ constexpr double kAxisFromSymmetricCos = 0.0;
 
 constexpr double kPi = 3.14159265358979323846;
 
+/// Largest |omega|^2 for Rodrigues' formula in terms of omega itself: b x y
+/// with b = (1 - cos t)/t^2 stays normal and t^2 finite below 2^1000 (t <
+/// 2^500 ~ 3e150); above it (including t^2 = inf) so3Exp works on the unit
+/// axis instead. A comparison, so the common path pays one branch.
+constexpr double kMaxSquaredAngle = 0x1p+1000;
+
+/// Default tolerance of so3LogChecked: |R^T R - I| (largest entry) and
+/// |det R - 1|. Rotations written to text with 7 significant digits (single
+/// precision, most mesh and animation formats) are orthonormal to ~1e-7.
+constexpr double kRotationTolerance = 1e-6;
+
 }  // namespace so3_detail
 
 /// hat: R^3 -> so(3), the 3x3 skew-symmetric matrix with hat(w) v = w x v.
@@ -44,13 +55,46 @@ inline Eigen::Vector3d vee(const Eigen::Matrix3d& m) {
   return 0.5 * Eigen::Vector3d(m(2, 1) - m(1, 2), m(0, 2) - m(2, 0), m(1, 0) - m(0, 1));
 }
 
+namespace so3_detail {
+
+/// Rodrigues' formula on a unit axis u: I + sin(t) [u]x + (1 - cos t) [u]x^2,
+/// with sin t = 2 s c and 1 - cos t = 2 s^2 (s, c the sine and cosine of t/2).
+inline Eigen::Matrix3d rodriguesOnAxis(const Eigen::Vector3d& u, double s, double c) {
+  const double a = 2.0 * s * c, b = 2.0 * s * s;
+  const double x = u.x(), y = u.y(), z = u.z();
+  const double bxy = b * x * y, bxz = b * x * z, byz = b * y * z;
+  Eigen::Matrix3d r;
+  r << 1.0 - b * (y * y + z * z), bxy - a * z, bxz + a * y,  //
+      bxy + a * z, 1.0 - b * (x * x + z * z), byz - a * x,   //
+      bxz - a * y, byz + a * x, 1.0 - b * (x * x + y * y);
+  return r;
+}
+
+/// so3Exp for |omega|^2 > kMaxSquaredAngle: the axis is taken from omega /
+/// max|omega_i| (norm in [1, sqrt 3], no overflow) and the half angle is
+/// formed without |omega| itself, which may exceed the double range. The rotation
+/// depends on t only modulo 2 pi; std::sin/std::cos reduce t/2 exactly (the
+/// C library's Payne–Hanek reduction), so the result is the rotation of the
+/// given double omega, not of a rounded angle.
+inline Eigen::Matrix3d so3ExpHugeAngle(const Eigen::Vector3d& omega) {
+  const double m = omega.cwiseAbs().maxCoeff();
+  const Eigen::Vector3d scaled = omega / m;
+  const double n = scaled.norm();  // in [1, sqrt 3]
+  const double half = (0.5 * m) * n;
+  return rodriguesOnAxis(scaled / n, std::sin(half), std::cos(half));
+}
+
+}  // namespace so3_detail
+
 /// Rotation matrix exp(hat(omega)) by Rodrigues' formula (Kaji–Ochiai §4.1):
 /// exp(X) = I + sin(t)/t X + (1 - cos(t))/t^2 X^2, t = |omega| (radians).
 /// (1 - cos t) is evaluated as 2 sin^2(t/2) to avoid cancellation; below
 /// so3_detail::kSmallAngle both coefficients use their Taylor series. Any
-/// omega is valid, including |omega| > 2 pi.
+/// finite omega is valid, including |omega| > 2 pi and |omega|^2 beyond the
+/// double range (so3_detail::so3ExpHugeAngle).
 inline Eigen::Matrix3d so3Exp(const Eigen::Vector3d& omega) {
   const double theta2 = omega.squaredNorm();
+  if (theta2 > so3_detail::kMaxSquaredAngle) return so3_detail::so3ExpHugeAngle(omega);
   double a;  // sin(t)/t
   double b;  // (1 - cos t)/t^2
   if (theta2 < so3_detail::kSmallAngle * so3_detail::kSmallAngle) {
@@ -79,7 +123,10 @@ inline Eigen::Matrix3d so3Exp(const Eigen::Vector3d& omega) {
 /// pi/2 the axis comes from the symmetric part, which makes the result exact at
 /// theta = pi (Eberly's special case; the sign is then that of the largest
 /// axis component's row, either is a valid logarithm). If R is only nearly
-/// orthonormal, the result is the log of a nearby rotation.
+/// orthonormal, the result is the log of a nearby rotation. Precondition (not
+/// checked, this sits in per-tet loops): R is a rotation; for any other matrix
+/// the result is meaningless (so3Log(0) = (pi, 0, 0)). Matrices from users go
+/// through so3LogChecked.
 inline Eigen::Vector3d so3Log(const Eigen::Matrix3d& r) {
   const Eigen::Vector3d v = vee(r);  // sin(theta) * axis
   const double c = 0.5 * (r.trace() - 1.0);
@@ -100,6 +147,13 @@ inline Eigen::Vector3d so3Log(const Eigen::Matrix3d& r) {
   if (axis.dot(v) < 0.0) axis = -axis;
   return theta * axis;
 }
+
+/// so3Log after checking that R (3x3) is a rotation: finite, largest entry of
+/// |R^T R - I| and |det R - 1| at most `tolerance` (absolute, both
+/// dimensionless). Throws DomainError naming the defect otherwise. For
+/// rotations that come from outside the library (files, user code).
+Eigen::Vector3d so3LogChecked(const Eigen::Matrix3d& r,
+                              double tolerance = so3_detail::kRotationTolerance);
 
 /// Logarithm of R closest (Euclidean norm in R^3) to `reference` among all
 /// logarithms of R, (theta + 2 pi k) * axis for integer k (Kaji–Ochiai §4.3,

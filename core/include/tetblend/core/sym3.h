@@ -26,14 +26,25 @@ Eigen::Vector3d symEigenvalues(const Eigen::Matrix3d& y);
 /// (4), with the series (5) extended to third order when the eigenvalue
 /// spread is small. Result is symmetric positive definite up to round-off;
 /// error relative to |exp Y|_F is a few ulps times the eigenvalue spread.
+/// Eigenvalues or spread beyond sym3_detail::kExpDirectMaxArg (where e^x or
+/// expm1 of the spread would leave the double range) take V exp(Lambda) V^T
+/// instead, scaled so that no intermediate overflows: the result is finite
+/// whenever exp(Y) is representable. Throws DomainError naming the largest
+/// eigenvalue if exp(Y) overflows double (largest eigenvalue above ~709.8),
+/// or if Y is not finite.
 Eigen::Matrix3d symExp(const Eigen::Matrix3d& y);
 
 /// Principal logarithm of a symmetric positive definite 3x3 S, Kaji–Ochiai
-/// eq. (6) (applied to S itself rather than to A^T A). For cond(S) above
-/// sym3_detail::kLogClosedFormMaxCond the quadratic closed form loses digits,
-/// so the logarithm is taken as V log(Lambda) V^T from a QR-iteration
-/// eigen-decomposition. Throws DomainError if S is not positive definite or
-/// not finite.
+/// eq. (6) (applied to S itself rather than to A^T A), of any magnitude the
+/// double range holds (S is first rescaled by a power of two when its largest
+/// diagonal entry leaves [kLogUnscaledMin, kLogUnscaledMax], and k ln 2 added
+/// back). For cond(S) above sym3_detail::kLogClosedFormMaxCond the quadratic
+/// closed form loses digits, so the logarithm is taken as V log(Lambda) V^T
+/// from a QR-iteration eigen-decomposition, redone by Jacobi rotations in long
+/// double when cond(S) exceeds 1/kLogLongDoubleMinRatio (so that cond up to
+/// ~1e15, where double eigenvalues may even come out negative, keeps the
+/// smallest eigenvalue to ~1e-4 relative). Throws DomainError if S is not
+/// positive definite or not finite.
 Eigen::Matrix3d symLog(const Eigen::Matrix3d& s);
 
 namespace sym3_detail {
@@ -41,6 +52,23 @@ namespace sym3_detail {
 /// eigen-decomposition: the Vandermonde reduction amplifies round-off by about
 /// cond(S) (the Z^2 term spans cond^2 while the result spans log cond).
 constexpr double kLogClosedFormMaxCond = 1e2;
+/// Largest |eigenvalue| and eigenvalue spread for symExp's closed form (4):
+/// e^lambda2 and expm1 of the spread stay normal (ln DBL_MAX ~ 709.78, and
+/// e^-700 ~ 1e-304 is normal). The batched lanes use the same bound
+/// (lane_math::kExpMaxArg), so both route the same inputs to the fallback.
+constexpr double kExpDirectMaxArg = 700.0;
+/// symLog works unscaled while the largest diagonal entry d of S lies in
+/// [kLogUnscaledMin, kLogUnscaledMax]: the cubic's p^2 ~ d^2 (and squared
+/// relative deviations down to eps^2 d^2) stay normal. Outside, S is scaled
+/// by 2^-ilogb(d), exactly.
+constexpr double kLogUnscaledMin = 0x1p-256;
+constexpr double kLogUnscaledMax = 0x1p+256;
+/// Ratio lambda_min / lambda_max below which symLog recomputes the
+/// eigen-decomposition in long double: a backward-stable double solver gives
+/// lambda_min with relative error ~eps / ratio, 2e-8 at this ratio, and of
+/// either sign at ratio ~1e-16. Long double (eps 1.1e-19 on x86-64) gives
+/// ~1e-4 at ratio 1e-15.
+constexpr double kLogLongDoubleMinRatio = 1e-8;
 /// Eigenvalue spread lambda1 - lambda3 below which symExp evaluates the second
 /// divided difference of exp (coefficient c of eq. (4)) by its Taylor series
 /// through third order. The dropped fourth-order term is <= 5 h^4/720 and
