@@ -1,19 +1,26 @@
-// bench_meshing: preparing compatible tet meshes for a rest bar and 3 examples
-// (2π twist, 180° bend, 170° dual-quaternion-skinned elbow), split into the
-// stages a user pays for:
+// bench_meshing: preparing compatible tet meshes for a rest bar and 3
+// examples, split into the stages a user pays for. Two example sets:
+//   easy  2π twist, 180° bend, 170° dual-quaternion-skinned elbow (the
+//         harmonic extension is already valid);
+//   hard  the pose corpus's twist720, dqsTwist300 and dqsBend170 of the same
+//         bar (pose_corpus.h): all-surface tets inverted up front, ARAP,
+//         untangling and refinement needed.
+// Stages:
 //   read      readSurface of the 4 binary PLY files (written once, untimed);
 //   validate  requireValidRest (incl. CGAL self-intersections) of the rest
 //             and requireCompatibleExample of the 3 examples;
 //   tetgen    tetrahedralize of the rest surface, maxTetVolume chosen for
 //             about 10k, 100k or 1M tets;
-//   embed     CompatibleTetBuilder construction (factorisation) + place() of
-//             each example (harmonic extension, then ARAP and untangling
-//             only if it inverts tets: none of these 3 examples does).
-// Counters are milliseconds per stage, embed split into factor_ms and
-// place_ms, the ratio (validate + embed) / tetgen, tets, inverted tets left
-// over all examples, and peak RSS (getrusage ru_maxrss of the whole process so
-// far; sizes run in increasing order, so it is the peak of the largest size
-// run yet). The reported time is the sum of the four stages.
+//   embed     buildCompatibleTetMeshes (example_aware_tets.h): the examples'
+//             self-intersection checks, refinement of all-surface tets,
+//             factorisation, placement of each example (harmonic, then ARAP,
+//             untangling and refinement rounds only where tets invert).
+// Counters are milliseconds per stage, the ratio (validate + embed) / tetgen,
+// tets (TetGen's, and after refinement), Steiner points added, inverted tets
+// left over the examples whose surface does not intersect itself, the number
+// of examples whose surface does ("intersecting"), and peak RSS (getrusage ru_maxrss of the whole
+// process so far; sizes run in increasing order, so it is the peak of the
+// largest size run yet). The reported time is the sum of the four stages.
 
 #include <benchmark/benchmark.h>
 #include <sys/resource.h>
@@ -29,7 +36,8 @@
 #include <vector>
 
 #include "tetblend/core/error.h"
-#include "tetblend/meshing/compatible_tets.h"
+#include "tetblend/meshing/example_aware_tets.h"
+#include "tetblend/meshing/pose_corpus.h"
 #include "tetblend/meshing/procedural_shapes.h"
 #include "tetblend/meshing/surface_io.h"
 #include "tetblend/meshing/surface_validation.h"
@@ -91,29 +99,46 @@ struct SurfaceFiles {
   std::vector<std::string> examples;
 };
 
-// Writes (once per size) the rest bar surface of m × m × 6m cells and its 3
-// examples as binary little-endian PLY (exact doubles).
-const SurfaceFiles& surfaceFiles(int cells) {
+enum ExampleSet { kEasy = 0, kHard = 1 };
+
+// The three examples of `set` for the rest bar `rest` (see the top).
+std::vector<Vertices> barExamples(const SurfaceMesh& rest, ExampleSet set) {
+  const Vertices& v = rest.vertices;
+  if (set == kHard) {
+    std::vector<Vertices> chosen;
+    for (const NamedPose& pose : hardPoses(v, rest.triangles)) {
+      if (pose.name == "twist720" || pose.name == "dqsTwist300" || pose.name == "dqsBend170") {
+        chosen.push_back(pose.vertices);
+      }
+    }
+    return chosen;
+  }
+  const Eigen::Vector3d start(-kLength / 2, 0, 0);
+  const Eigen::MatrixXd weights =
+      twoBoneWeights(v, Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitX(), 1.5);
+  return {twistAboutAxis(v, start, Eigen::Vector3d::UnitX(), 2 * kPi, kLength),
+          bendAboutAxis(v, start, Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitY(), kPi, kLength),
+          dualQuaternionSkinning(v, weights,
+                                 {Eigen::Isometry3d::Identity(),
+                                  rotationAboutLine(Eigen::Vector3d::Zero(),
+                                                    Eigen::Vector3d::UnitZ(), 170 * kPi / 180)})};
+}
+
+// Writes (once per size and set) the rest bar surface of m × m × 6m cells and
+// its 3 examples as binary little-endian PLY (exact doubles).
+const SurfaceFiles& surfaceFiles(int cells, ExampleSet set) {
   static TempDir dir;
-  static std::map<int, SurfaceFiles> cache;
-  auto it = cache.find(cells);
+  static std::map<std::pair<int, int>, SurfaceFiles> cache;
+  auto it = cache.find({cells, set});
   if (it != cache.end()) return it->second;
 
   const SurfaceMesh full =
       boundarySurface(boxTetMesh(6 * cells, cells, cells, Eigen::Vector3d(kLength, 1.0, 1.0)));
   const SurfaceMesh rest = removeVertices(full, unreferencedVertices(full));
-  const Vertices& v = rest.vertices;
-  const Eigen::Vector3d start(-kLength / 2, 0, 0);
-  const Eigen::MatrixXd weights =
-      twoBoneWeights(v, Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitX(), 1.5);
-  const std::vector<Vertices> deformed = {
-      twistAboutAxis(v, start, Eigen::Vector3d::UnitX(), 2 * kPi, kLength),
-      bendAboutAxis(v, start, Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitY(), kPi, kLength),
-      dualQuaternionSkinning(
-          v, weights,
-          {Eigen::Isometry3d::Identity(),
-           rotationAboutLine(Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitZ(), 170 * kPi / 180)})};
-  const std::string prefix = (dir.path() / ("bar" + std::to_string(cells) + "_")).string();
+  const std::vector<Vertices> deformed = barExamples(rest, set);
+  const std::string prefix =
+      (dir.path() / ("bar" + std::to_string(cells) + (set == kHard ? "_hard_" : "_easy_")))
+          .string();
   SurfaceFiles files;
   files.rest = prefix + "rest.ply";
   writeSurface(files.rest, rest);
@@ -121,18 +146,21 @@ const SurfaceFiles& surfaceFiles(int cells) {
     files.examples.push_back(prefix + "example" + std::to_string(e) + ".ply");
     writeSurface(files.examples.back(), SurfaceMesh{deformed[e], rest.triangles});
   }
-  return cache.emplace(cells, std::move(files)).first->second;
+  return cache.emplace(std::make_pair(cells, static_cast<int>(set)), std::move(files))
+      .first->second;
 }
 
 void BM_PrepareCompatibleMeshes(benchmark::State& state) {
   const long long targetTets = state.range(0);
-  const SurfaceFiles& files = surfaceFiles(surfaceCellsFor(targetTets));
+  const ExampleSet set = static_cast<ExampleSet>(state.range(1));
+  const SurfaceFiles& files = surfaceFiles(surfaceCellsFor(targetTets), set);
   TetGenOptions tetgenOptions;
   tetgenOptions.maxTetVolume = kBarVolume / (kMeanToMaxVolume * static_cast<double>(targetTets));
   tetgenOptions.sourceName = files.rest;
 
-  double readMs = 0, validateMs = 0, tetgenMs = 0, factorMs = 0, placeMs = 0;
-  long long tets = 0, surfaceFaces = 0, invertedLeft = 0;
+  double readMs = 0, validateMs = 0, tetgenMs = 0, embedMs = 0;
+  long long tets = 0, refinedTets = 0, steiner = 0, surfaceFaces = 0, invertedLeft = 0,
+            intersecting = 0;
   for (auto _ : state) {
     auto start = std::chrono::steady_clock::now();
     const SurfaceMesh rest = readSurface(files.rest);
@@ -154,44 +182,47 @@ void BM_PrepareCompatibleMeshes(benchmark::State& state) {
     // tetrahedralize keeps the input vertices first and in order, so the
     // surface vertices are rows 0..#S-1 as the builder requires.
     start = std::chrono::steady_clock::now();
-    const CompatibleTetBuilder builder(restTets, static_cast<int>(rest.vertices.rows()));
-    factorMs = millisecondsSince(start);
-
-    start = std::chrono::steady_clock::now();
+    std::vector<Vertices> surfaces;
+    for (const SurfaceMesh& example : examples) surfaces.push_back(example.vertices);
+    const CompatibleTetMeshes built =
+        buildCompatibleTetMeshes(restTets, static_cast<int>(rest.vertices.rows()), surfaces);
+    embedMs = millisecondsSince(start);
     invertedLeft = 0;
-    for (const SurfaceMesh& example : examples) {
-      const CompatibleTetResult result = builder.place(example.vertices);
-      invertedLeft += static_cast<long long>(result.invertedTets.size());
-      benchmark::DoNotOptimize(result.vertices.data());
+    intersecting = 0;
+    for (std::size_t k = 0; k < built.examples.size(); ++k) {
+      if (built.selfIntersectingPairs[k] > 0) {
+        ++intersecting;
+      } else {
+        invertedLeft += static_cast<long long>(built.examples[k].invertedTets.size());
+      }
     }
-    placeMs = millisecondsSince(start);
+    refinedTets = built.rest.tets.rows();
+    steiner = built.steinerPoints;
 
     tets = restTets.tets.rows();
     surfaceFaces = rest.triangles.rows();
-    state.SetIterationTime((readMs + validateMs + tetgenMs + factorMs + placeMs) / 1000.0);
+    state.SetIterationTime((readMs + validateMs + tetgenMs + embedMs) / 1000.0);
   }
-  const double embedMs = factorMs + placeMs;
   state.counters["tets"] = static_cast<double>(tets);
+  state.counters["tets_refined"] = static_cast<double>(refinedTets);
+  state.counters["steiner"] = static_cast<double>(steiner);
   state.counters["surf_faces"] = static_cast<double>(surfaceFaces);
   state.counters["read_ms"] = readMs;
   state.counters["validate_ms"] = validateMs;
   state.counters["tetgen_ms"] = tetgenMs;
-  state.counters["factor_ms"] = factorMs;
-  state.counters["place_ms"] = placeMs;
   state.counters["embed_ms"] = embedMs;
   state.counters["val+emb/tetgen"] = (validateMs + embedMs) / tetgenMs;
   state.counters["inverted_left"] = static_cast<double>(invertedLeft);
+  state.counters["intersecting"] = static_cast<double>(intersecting);
   state.counters["peak_rss_MB"] = peakRssMegabytes();
 }
 
-// Targets 10k, 100k and 1M tets (9.6k, 99k and 999k measured). The 1M size
-// alone takes about 20 s and 0.85 GB on 2 shared cores (most of it TetGen and
-// the Cholesky factorisation); skip it with
-// --benchmark_filter='/(10000|100000)/'.
+// Targets 10k, 100k and 1M tets (9.6k, 99k and 999k measured), second
+// argument 0 = easy, 1 = hard examples. The 1M easy size alone takes about
+// 20 s and 0.85 GB on 2 shared cores (most of it TetGen and the Cholesky
+// factorisation); skip it with --benchmark_filter='/(10000|100000)/'.
 BENCHMARK(BM_PrepareCompatibleMeshes)
-    ->Arg(10000)
-    ->Arg(100000)
-    ->Arg(1000000)
+    ->ArgsProduct({{10000, 100000, 1000000}, {kEasy, kHard}})
     ->Unit(benchmark::kMillisecond)
     ->UseManualTime()
     ->Iterations(1);

@@ -34,7 +34,8 @@ TetMesh stitchedMesh(const ModelData& model) {
   if (model.excludedTets.empty()) return model.rest;
   TetMesh kept;
   kept.vertices = model.rest.vertices;
-  kept.tets.resize(model.rest.tets.rows() - static_cast<Eigen::Index>(model.excludedTets.size()), 4);
+  kept.tets.resize(model.rest.tets.rows() - static_cast<Eigen::Index>(model.excludedTets.size()),
+                   4);
   Eigen::Index row = 0;
   std::size_t next = 0;  // model.excludedTets is ascending
   for (Eigen::Index t = 0; t < model.rest.tets.rows(); ++t) {

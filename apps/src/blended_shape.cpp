@@ -16,14 +16,13 @@ NamedArray cellArray(const std::string& name, const std::vector<double>& values)
 std::vector<Eigen::Matrix3d> targetsOfAllTets(const ModelData& model,
                                               const std::vector<Eigen::Matrix3d>& stitched) {
   if (stitched.empty()) return {};
-  std::vector<Eigen::Matrix3d> all(static_cast<std::size_t>(model.rest.tets.rows()),
-                                   Eigen::Matrix3d::Constant(
-                                       std::numeric_limits<double>::quiet_NaN()));
+  std::vector<Eigen::Matrix3d> all(
+      static_cast<std::size_t>(model.rest.tets.rows()),
+      Eigen::Matrix3d::Constant(std::numeric_limits<double>::quiet_NaN()));
   std::size_t next = 0;  // model.excludedTets is ascending
   std::size_t kept = 0;
   for (std::size_t t = 0; t < all.size(); ++t) {
-    if (next < model.excludedTets.size() &&
-        model.excludedTets[next] == static_cast<int>(t)) {
+    if (next < model.excludedTets.size() && model.excludedTets[next] == static_cast<int>(t)) {
       ++next;
       continue;
     }
@@ -38,11 +37,10 @@ BlendedShape blendShape(const ShapeBlender& blender, const ModelData& model,
                         const std::vector<double>& weights, BlendMethod method) {
   BlendResult result = blender.blend(weights, method);
   const bool excludes = !model.excludedTets.empty();
-  const TetQuality q =
-      excludes ? tetQuality(model.rest, restTetData(model.rest), result.vertices,
-                            targetsOfAllTets(model, result.targets))
-               : tetQuality(blender.rest(), blender.stitch().restData(), result.vertices,
-                            result.targets);
+  const TetQuality q = excludes ? tetQuality(model.rest, restTetData(model.rest), result.vertices,
+                                             targetsOfAllTets(model, result.targets))
+                                : tetQuality(blender.rest(), blender.stitch().restData(),
+                                             result.vertices, result.targets);
   BlendedShape shape;
   shape.quality = summarizeQuality(q);
   shape.cellData.push_back(cellArray("volume_ratio", q.volumeRatio));

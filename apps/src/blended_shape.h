@@ -7,9 +7,9 @@
 #include <utility>
 #include <vector>
 
+#include "model_file.h"
 #include "tetblend/blending/quality.h"
 #include "tetblend/blending/shape_blender.h"
-#include "model_file.h"
 #include "tetblend/meshing/mesh_data_arrays.h"
 
 namespace tetblend::cli {
@@ -23,16 +23,14 @@ struct BlendedShape {
 
 /// Blends `weights` with `method` on `blender` (makeBlender of `model`) and
 /// computes the per-tet quality of the result over all the model's tets
-/// (tetQuality, with F_j = grad_j x), as cell arrays: "volume_ratio" det F_j (1 = volume kept, <= 0 = inverted),
-/// "inverted" (1 or 0), "distortion" sigma_max / sigma_min of F_j (1 = no
-/// shape change), "rotation_angle" of the polar rotation of F_j in radians
-/// (NaN where inverted) and, for the methods with per-tet targets,
-/// "target_residual" ||F_j - B_j||_F (how far the stitch had to move tet j
-/// from its blended map; 0 where the blended maps were already compatible;
-/// NaN for excluded tets) and, when the model has excluded tets, "excluded"
-/// (1 for the tets left out of the stitch).
-/// The nonlinear stitch runs when the blender was made with it (makeBlender).
-/// Not safe to call concurrently on one blender.
+/// (tetQuality, with F_j = grad_j x), as cell arrays: "volume_ratio" det F_j (1 = volume kept, <= 0
+/// = inverted), "inverted" (1 or 0), "distortion" sigma_max / sigma_min of F_j (1 = no shape
+/// change), "rotation_angle" of the polar rotation of F_j in radians (NaN where inverted) and, for
+/// the methods with per-tet targets, "target_residual" ||F_j - B_j||_F (how far the stitch had to
+/// move tet j from its blended map; 0 where the blended maps were already compatible; NaN for
+/// excluded tets) and, when the model has excluded tets, "excluded" (1 for the tets left out of the
+/// stitch). The nonlinear stitch runs when the blender was made with it (makeBlender). Not safe to
+/// call concurrently on one blender.
 BlendedShape blendShape(const ShapeBlender& blender, const ModelData& model,
                         const std::vector<double>& weights, BlendMethod method);
 

@@ -149,8 +149,8 @@ ModelData decodePayload(const unsigned char* data, std::size_t size, const std::
   if (version >= 2) {
     const std::uint64_t nx = r.count("excluded tet count");
     if (nx > nt) {
-      throw InputError(path + ": damaged model file (" + std::to_string(nx) +
-                       " excluded tets of " + std::to_string(nt) + "); re-run 'tetblend prepare'");
+      throw InputError(path + ": damaged model file (" + std::to_string(nx) + " excluded tets of " +
+                       std::to_string(nt) + "); re-run 'tetblend prepare'");
     }
     for (std::uint64_t i = 0; i < nx; ++i) m.excludedTets.push_back(r.i32());
   }

@@ -40,8 +40,8 @@ std::string threeDigits(double value) {
 std::string surfaceDiagnosis(const SurfaceMesh& example) {
   const SelfIntersections found = findSelfIntersections(example.vertices, example.triangles, 1);
   if (found.pairCount == 0) return "its surface does not intersect itself but folds too tightly";
-  return "its surface intersects itself at " + std::to_string(found.pairCount) +
-         " face pair" + (found.pairCount > 1 ? "s" : "") + ", first faces " +
+  return "its surface intersects itself at " + std::to_string(found.pairCount) + " face pair" +
+         (found.pairCount > 1 ? "s" : "") + ", first faces " +
          std::to_string(found.pairs.front().first) + " and " +
          std::to_string(found.pairs.front().second);
 }
@@ -118,30 +118,30 @@ ModelData prepareModel(const std::string& restPath, const std::vector<std::strin
   const TetMesh tets = tetrahedralize(rest, tetgen);
   progress.advance();
   if (tets.tets.rows() > kLargeMeshWarningTets) {
-    say(messages.warning,
-        restPath + ": " + roughCount(tets.tets.rows()) + " tets; preparing and each blend need " +
-            "about " + formatNumber(std::round(tets.tets.rows() / 1e5) / 10) +
-            " GB of memory (a coarser mesh: a larger --quality, e.g. 3)");
+    say(messages.warning, restPath + ": " + roughCount(tets.tets.rows()) +
+                              " tets; preparing and each blend need " + "about " +
+                              formatNumber(std::round(tets.tets.rows() / 1e5) / 10) +
+                              " GB of memory (a coarser mesh: a larger --quality, e.g. 3)");
   }
   std::vector<Vertices> surfaces;
   for (const SurfaceMesh& example : examples) surfaces.push_back(example.vertices);
   CompatibleTetMeshes built = buildCompatibleTetMeshes(
-      tets, model.surfaceVertexCount, surfaces, ExampleAwareOptions{},
-      [&](const char* stage) {
+      tets, model.surfaceVertexCount, surfaces, ExampleAwareOptions{}, [&](const char* stage) {
         if (std::string(stage) == "place") progress.advance();
       });
   model.rest = std::move(built.rest);
   for (std::size_t k = 0; k < examples.size(); ++k) {
     CompatibleTetResult& placed = built.examples[k];
     if (!placed.invertedTets.empty()) {
-      const std::string what =
-          examplePaths[k] + ": " + std::to_string(placed.invertedTets.size()) +
-          " tets cannot be embedded (worst volume ratio " +
-          threeDigits(worstVolumeRatio(model.rest, placed)) + ", first tet " +
-          std::to_string(placed.invertedTets.front()) + "); " + surfaceDiagnosis(examples[k]);
+      const std::string what = examplePaths[k] + ": " + std::to_string(placed.invertedTets.size()) +
+                               " tets cannot be embedded (worst volume ratio " +
+                               threeDigits(worstVolumeRatio(model.rest, placed)) + ", first tet " +
+                               std::to_string(placed.invertedTets.front()) + "); " +
+                               surfaceDiagnosis(examples[k]);
       if (settings.strict) {
-        throw InputError(what + ": repair the pose, or leave out --strict to exclude those "
-                                "tets from the stitch");
+        throw InputError(what +
+                         ": repair the pose, or leave out --strict to exclude those "
+                         "tets from the stitch");
       }
       say(messages.warning, what + ": they are left out of the stitch of every blend");
       model.excludedTets.insert(model.excludedTets.end(), placed.invertedTets.begin(),

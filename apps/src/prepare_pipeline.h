@@ -23,12 +23,12 @@ struct PrepareSettings {
   /// inwards, and the examples refine it where they need it
   /// (example_aware_tets.h).
   std::optional<double> maxVolume;
-  bool tetrise = false;          ///< per-face tetrisation instead of TetGen
+  bool tetrise = false;  ///< per-face tetrisation instead of TetGen
   /// Refuse examples with tets that cannot be embedded (default: report them
   /// and leave them out of the stitch).
   bool strict = false;
-  int threads = 0;               ///< worker threads; 0 = all cores
-  bool quiet = false;            ///< no progress bar
+  int threads = 0;     ///< worker threads; 0 = all cores
+  bool quiet = false;  ///< no progress bar
 };
 
 /// Where prepareModel's messages go, one line each (no prefix, no newline).
@@ -53,8 +53,8 @@ void addPrepareOptions(CLI::App& command, PrepareSettings& settings);
 /// surface folds or intersects itself) become the model's excluded tets, with
 /// one warning per such example; settings.strict refuses them instead.
 /// A rest mesh above kLargeMeshWarningTets is warned about before the long
-/// steps start; a note gives the tet count and the Steiner points added. Throws InputError naming the file and the
-/// problem.
+/// steps start; a note gives the tet count and the Steiner points added. Throws InputError naming
+/// the file and the problem.
 ModelData prepareModel(const std::string& restPath, const std::vector<std::string>& examplePaths,
                        const PrepareSettings& settings, const PrepareMessages& messages = {});
 

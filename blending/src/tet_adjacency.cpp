@@ -36,7 +36,8 @@ void linkFacelessTetsThroughEdges(const Tets& tets, TetAdjacency& adjacency) {
       for (size_t q = i; q < j; ++q) {
         const int from = edges[p].second;
         const int to = edges[q].second;
-        if (from == to || (!faceless[static_cast<size_t>(from)] && !faceless[static_cast<size_t>(to)])) {
+        if (from == to ||
+            (!faceless[static_cast<size_t>(from)] && !faceless[static_cast<size_t>(to)])) {
           continue;
         }
         std::vector<int>& list = adjacency.neighbours[static_cast<size_t>(from)];

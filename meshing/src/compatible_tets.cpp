@@ -115,9 +115,8 @@ struct CompatibleTetBuilder::Impl {
 
   void requireExampleSurface(const Vertices& positions, Eigen::Index rows) const {
     if (positions.rows() != rows || !positions.allFinite()) {
-      throw InputError("CompatibleTetBuilder: the example has " +
-                       std::to_string(positions.rows()) + " vertices (need " +
-                       std::to_string(rows) + ", all finite)");
+      throw InputError("CompatibleTetBuilder: the example has " + std::to_string(positions.rows()) +
+                       " vertices (need " + std::to_string(rows) + ", all finite)");
     }
   }
 

@@ -12,7 +12,8 @@
 namespace tetblend {
 namespace {
 
-// Stage 3 rounds in a row without fewer inverted tets before it gives up.
+// Stage 3 rounds in a row without fewer inverted tets of an example before
+// its refinement gives up.
 constexpr int kPatience = 2;
 
 void sortUnique(std::vector<int>& values) {
@@ -58,15 +59,6 @@ void split(const std::vector<Simplex>& simplices, CompatibleTetMeshes& meshes) {
   }
   meshes.steinerPoints += static_cast<int>(simplices.size());
   ++meshes.rounds;
-}
-
-// Inverted tets summed over the examples whose surface is clean.
-std::size_t countInvertedInClean(const CompatibleTetMeshes& meshes) {
-  std::size_t count = 0;
-  for (std::size_t k = 0; k < meshes.examples.size(); ++k) {
-    if (meshes.selfIntersectingPairs[k] == 0) count += meshes.examples[k].invertedTets.size();
-  }
-  return count;
 }
 
 }  // namespace
@@ -125,9 +117,9 @@ CompatibleTetMeshes buildCompatibleTetMeshes(const TetMesh& rest, int surfaceVer
     CompatibleTetResult placed = builder.place(exampleSurfaces[k]);
     if (options.placement.untangle && !placed.invertedTets.empty()) {
       const bool clean = meshes.selfIntersectingPairs[k] == 0;
-      CompatibleTetResult repaired = builder.repair(
-          placed.vertices, clean ? options.placement.untangleMaxRings
-                                 : options.intersectingUntangleRings);
+      CompatibleTetResult repaired =
+          builder.repair(placed.vertices, clean ? options.placement.untangleMaxRings
+                                                : options.intersectingUntangleRings);
       repaired.harmonicInvertedCount = placed.harmonicInvertedCount;
       repaired.arapIterations = placed.arapIterations;
       placed = std::move(repaired);
@@ -136,50 +128,57 @@ CompatibleTetMeshes buildCompatibleTetMeshes(const TetMesh& rest, int surfaceVer
     if (progress) progress("place");
   }
 
-  // Stage 3: refine where clean examples stay inverted, untangle again. A
-  // split halves an inverted tet into two that may both stay inverted, so a
-  // round may count more before the next one counts fewer: the search stops
-  // after kPatience rounds without a new best, and keeps the best state.
-  std::size_t best = countInvertedInClean(meshes);
-  CompatibleTetMeshes bestMeshes;
-  int sinceBest = 0;
-  for (int round = 0; round < options.maxRounds && options.placement.untangle && best > 0 &&
-                      sinceBest < kPatience;
-       ++round) {
-    std::vector<int> bad;
-    for (std::size_t k = 0; k < exampleSurfaces.size(); ++k) {
-      if (meshes.selfIntersectingPairs[k] > 0) continue;
-      const std::vector<int>& inverted = meshes.examples[k].invertedTets;
-      bad.insert(bad.end(), inverted.begin(), inverted.end());
-    }
-    sortUnique(bad);
-    const std::vector<Simplex> simplices =
-        simplicesFreeing(meshes.rest, bad, surfaceVertexCount, boundary);
-    if (simplices.empty()) break;
-    if (sinceBest == 0) bestMeshes = meshes;
-    split(simplices, meshes);
-    const CompatibleTetBuilder refined(meshes.rest, surfaceVertexCount, placement);
-    for (std::size_t k = 0; k < exampleSurfaces.size(); ++k) {
-      CompatibleTetResult& example = meshes.examples[k];
-      const bool clean = meshes.selfIntersectingPairs[k] == 0;
-      CompatibleTetResult updated =
-          clean ? refined.repair(example.vertices, options.placement.untangleMaxRings)
-                : refined.evaluate(example.vertices);
-      updated.harmonicInvertedCount = example.harmonicInvertedCount;
-      updated.arapIterations = example.arapIterations;
-      updated.untangleRounds += example.untangleRounds;
-      example = std::move(updated);
-    }
-    if (progress) progress("refine");
-    const std::size_t count = countInvertedInClean(meshes);
-    if (count < best) {
-      best = count;
-      sinceBest = 0;
-    } else {
-      ++sinceBest;
+  // Stage 3: refine where clean examples stay inverted, untangle again, one
+  // example at a time, the one with the fewest inverted tets first (a hopeless
+  // example refined first would split the others' remaining inverted tets
+  // too). A split halves an inverted tet into two that may both stay
+  // inverted, so a round may count more before the next one counts fewer: an
+  // example's rounds stop after kPatience rounds without a new best, and its
+  // best state is kept. Valid placements stay valid through every split.
+  std::vector<std::size_t> order;
+  for (std::size_t k = 0; k < exampleSurfaces.size(); ++k) {
+    if (meshes.selfIntersectingPairs[k] == 0 && !meshes.examples[k].invertedTets.empty()) {
+      order.push_back(k);
     }
   }
-  if (sinceBest > 0) meshes = std::move(bestMeshes);
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return meshes.examples[a].invertedTets.size() < meshes.examples[b].invertedTets.size();
+  });
+  if (!options.placement.untangle) order.clear();
+  int rounds = 0;
+  for (std::size_t k : order) {
+    std::size_t best = meshes.examples[k].invertedTets.size();
+    CompatibleTetMeshes bestMeshes;
+    int sinceBest = 0;
+    while (best > 0 && sinceBest < kPatience && rounds < options.maxRounds) {
+      const std::vector<Simplex> simplices = simplicesFreeing(
+          meshes.rest, meshes.examples[k].invertedTets, surfaceVertexCount, boundary);
+      if (simplices.empty()) break;
+      if (sinceBest == 0) bestMeshes = meshes;
+      split(simplices, meshes);
+      ++rounds;
+      const CompatibleTetBuilder refined(meshes.rest, surfaceVertexCount, placement);
+      for (std::size_t j = 0; j < exampleSurfaces.size(); ++j) {
+        CompatibleTetResult& example = meshes.examples[j];
+        CompatibleTetResult updated =
+            j == k ? refined.repair(example.vertices, options.placement.untangleMaxRings)
+                   : refined.evaluate(example.vertices);
+        updated.harmonicInvertedCount = example.harmonicInvertedCount;
+        updated.arapIterations = example.arapIterations;
+        updated.untangleRounds += example.untangleRounds;
+        example = std::move(updated);
+      }
+      if (progress) progress("refine");
+      const std::size_t count = meshes.examples[k].invertedTets.size();
+      if (count < best) {
+        best = count;
+        sinceBest = 0;
+      } else {
+        ++sinceBest;
+      }
+    }
+    if (sinceBest > 0) meshes = std::move(bestMeshes);
+  }
   return meshes;
 }
 

@@ -118,13 +118,13 @@ std::vector<NamedPose> hardPoses(const Vertices& rest, const Triangles& triangle
   // half-thickness (a half circle when the shape is slender enough).
   const double halfThickness = 0.5 * box.extents[2];
   const double bendAngle = std::min(kPi, length / (kBendRadiusMargin * halfThickness));
-  poses.push_back({"bend180", bendAboutAxis(rest, start, box.axes[0], box.axes[2], bendAngle,
-                                            length)});
+  poses.push_back(
+      {"bend180", bendAboutAxis(rest, start, box.axes[0], box.axes[2], bendAngle, length)});
   Eigen::Matrix3d shear = Eigen::Matrix3d::Identity();
   shear += 0.8 * box.axes[1] * box.axes[0].transpose();
-  shear = shear * (1.3 * box.axes[0] * box.axes[0].transpose() +
-                   box.axes[1] * box.axes[1].transpose() +
-                   0.7 * box.axes[2] * box.axes[2].transpose());
+  shear =
+      shear * (1.3 * box.axes[0] * box.axes[0].transpose() + box.axes[1] * box.axes[1].transpose() +
+               0.7 * box.axes[2] * box.axes[2].transpose());
   poses.push_back({"shear", affine(rest, box, shear)});
   poses.push_back({"taperedShear", taperedShear(rest, box)});
   Vertices noisy = twistAboutAxis(rest, start, box.axes[0], 2 * kPi, length);

@@ -12,7 +12,8 @@ namespace {
 // The six edges and four faces of a tet as local corners.
 constexpr std::array<std::array<int, 2>, 6> kTetEdges = {
     {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}}};
-constexpr std::array<std::array<int, 3>, 4> kTetFaces = {{{1, 2, 3}, {0, 2, 3}, {0, 1, 3}, {0, 1, 2}}};
+constexpr std::array<std::array<int, 3>, 4> kTetFaces = {
+    {{1, 2, 3}, {0, 2, 3}, {0, 1, 3}, {0, 1, 2}}};
 
 Simplex makeSimplex(std::initializer_list<int> vertices) {
   Simplex simplex;
@@ -76,7 +77,8 @@ std::vector<Simplex> simplicesToSplit(const TetMesh& mesh, int tet, int surfaceC
     const Simplex edge = makeSimplex({corners(local[0]), corners(local[1])});
     if (contains(boundary.edges, edge)) continue;
     if (edge.vertices[1] < surfaceCount) rigid.push_back(edge);
-    const double length = (mesh.vertices.row(edge.vertices[0]) - mesh.vertices.row(edge.vertices[1])).norm();
+    const double length =
+        (mesh.vertices.row(edge.vertices[0]) - mesh.vertices.row(edge.vertices[1])).norm();
     if (length > longestLength) {
       longestLength = length;
       longest = edge;
@@ -86,7 +88,8 @@ std::vector<Simplex> simplicesToSplit(const TetMesh& mesh, int tet, int surfaceC
     const Simplex face = makeSimplex({corners(local[0]), corners(local[1]), corners(local[2])});
     if (contains(boundary.faces, face)) continue;
     const int a = face.vertices[0], b = face.vertices[1], c = face.vertices[2];
-    if (contains(boundary.edges, makeSimplex({a, b})) && contains(boundary.edges, makeSimplex({b, c})) &&
+    if (contains(boundary.edges, makeSimplex({a, b})) &&
+        contains(boundary.edges, makeSimplex({b, c})) &&
         contains(boundary.edges, makeSimplex({a, c}))) {
       rigid.push_back(face);
     }
@@ -102,28 +105,35 @@ TetMesh splitSimplices(const TetMesh& mesh, const std::vector<Simplex>& simplice
   std::vector<Eigen::RowVector4i> tets(static_cast<size_t>(mesh.tets.rows()));
   for (size_t t = 0; t < tets.size(); ++t) {
     tets[t] = mesh.tets.row(static_cast<Eigen::Index>(t));
-    for (int c = 0; c < 4; ++c) stars[static_cast<size_t>(tets[t](c))].push_back(static_cast<int>(t));
+    for (int c = 0; c < 4; ++c)
+      stars[static_cast<size_t>(tets[t](c))].push_back(static_cast<int>(t));
   }
   std::vector<Eigen::RowVector3d> positions;
   for (const Simplex& simplex : simplices) {
     const int first = simplex.vertices[0];
-    if (simplex.count < 2 || first < 0 || simplex.vertices[static_cast<size_t>(simplex.count - 1)] >= oldVertices) {
-      throw InputError("splitSimplices: " + simplexText(simplex) + " is not an edge or face of the mesh");
+    if (simplex.count < 2 || first < 0 ||
+        simplex.vertices[static_cast<size_t>(simplex.count - 1)] >= oldVertices) {
+      throw InputError("splitSimplices: " + simplexText(simplex) +
+                       " is not an edge or face of the mesh");
     }
     std::vector<int> around;  // tets holding every vertex of the simplex
     for (int t : stars[static_cast<size_t>(first)]) {
       bool all = true;
       for (int i = 1; i < simplex.count; ++i) {
-        all = all && (tets[static_cast<size_t>(t)].array() == simplex.vertices[static_cast<size_t>(i)]).any();
+        all = all &&
+              (tets[static_cast<size_t>(t)].array() == simplex.vertices[static_cast<size_t>(i)])
+                  .any();
       }
       if (all) around.push_back(t);
     }
     if (around.empty()) {
-      throw InputError("splitSimplices: " + simplexText(simplex) + " is not an edge or face of the mesh");
+      throw InputError("splitSimplices: " + simplexText(simplex) +
+                       " is not an edge or face of the mesh");
     }
     const int p = static_cast<int>(oldVertices + static_cast<Eigen::Index>(positions.size()));
     Eigen::RowVector3d centroid = Eigen::RowVector3d::Zero();
-    for (int i = 0; i < simplex.count; ++i) centroid += mesh.vertices.row(simplex.vertices[static_cast<size_t>(i)]);
+    for (int i = 0; i < simplex.count; ++i)
+      centroid += mesh.vertices.row(simplex.vertices[static_cast<size_t>(i)]);
     positions.push_back(centroid / simplex.count);
     for (int t : around) {
       const Eigen::RowVector4i parent = tets[static_cast<size_t>(t)];

@@ -141,7 +141,7 @@ class UntangleEnergy {
   std::vector<int> variable_;  // per vertex: its index in freeVertices_, or -1
   Vertices positions_;
   std::vector<int> active_;
-  std::vector<double> tetEnergy_;                        // per active tet
+  std::vector<double> tetEnergy_;                         // per active tet
   std::vector<Eigen::Matrix<double, 3, 4>> tetGradient_;  // per active tet
   double totalVolume_ = 0.0;
 };

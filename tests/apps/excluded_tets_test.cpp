@@ -62,7 +62,8 @@ TEST_F(ExcludedTets, BlendsStillInterpolateTheRestAndEveryExample) {
   for (const std::string method : {"kaji", "liebodies", "dq", "linear", "vertex-linear"}) {
     for (const auto& [weights, expected] : cases) {
       SCOPED_TRACE(method + " at " + weights);
-      const fs::path out = dir_ / (method + "_" + weights.substr(0, 1) + weights.substr(2) + ".vtu");
+      const fs::path out =
+          dir_ / (method + "_" + weights.substr(0, 1) + weights.substr(2) + ".vtu");
       const RunResult r = tetblend(
           {"blend", model.string(), "-w", weights, "--method", method, "-o", out.string()}, dir_);
       ASSERT_EQ(r.code, 0) << r.err;

@@ -27,7 +27,8 @@ constexpr double kVolumeRelTol = 1e-12;
 
 double totalVolume(const TetMesh& mesh) {
   double sum = 0.0;
-  for (Eigen::Index t = 0; t < mesh.tets.rows(); ++t) sum += tetSignedVolume(mesh.vertices, mesh.tets.row(t));
+  for (Eigen::Index t = 0; t < mesh.tets.rows(); ++t)
+    sum += tetSignedVolume(mesh.vertices, mesh.tets.row(t));
   return sum;
 }
 
@@ -57,7 +58,8 @@ struct AllSurfaceBar {
 
 AllSurfaceBar allSurfaceBar() {
   AllSurfaceBar bar;
-  const SurfaceMesh boundary = boundarySurface(boxTetMesh(32, 3, 3, Eigen::Vector3d(4.0, 0.6, 0.6)));
+  const SurfaceMesh boundary =
+      boundarySurface(boxTetMesh(32, 3, 3, Eigen::Vector3d(4.0, 0.6, 0.6)));
   bar.surface = removeVertices(boundary, unreferencedVertices(boundary));
   bar.rest = tetrahedralize(bar.surface);
   bar.twisted = twistAboutAxis(bar.surface.vertices, Eigen::Vector3d(-2, 0, 0),
@@ -69,10 +71,12 @@ TEST(ExampleAwareTets, ConstructedAllSurfaceTetIsInvertedByTheExample) {
   const AllSurfaceBar bar = allSurfaceBar();
   const int surfaceCount = static_cast<int>(bar.surface.vertices.rows());
   ASSERT_EQ(findSelfIntersections(bar.twisted, bar.surface.triangles, 1).pairCount, 0u);
-  const std::vector<int> allSurface = invertedAllSurfaceTets(bar.rest.tets, surfaceCount, bar.twisted);
+  const std::vector<int> allSurface =
+      invertedAllSurfaceTets(bar.rest.tets, surfaceCount, bar.twisted);
   EXPECT_FALSE(allSurface.empty());
   // Placement alone leaves them (and more) inverted.
-  const CompatibleTetResult placed = CompatibleTetBuilder(bar.rest, surfaceCount).place(bar.twisted);
+  const CompatibleTetResult placed =
+      CompatibleTetBuilder(bar.rest, surfaceCount).place(bar.twisted);
   for (int t : allSurface) {
     EXPECT_TRUE(std::binary_search(placed.invertedTets.begin(), placed.invertedTets.end(), t)) << t;
   }
@@ -92,7 +96,8 @@ TEST(ExampleAwareTets, SteinerPointsRepairAllSurfaceTets) {
   // boundary faces; the solid is the same.
   EXPECT_TRUE(built.rest.vertices.topRows(surfaceCount) == bar.surface.vertices);
   EXPECT_EQ(sortedFaces(boundarySurface(built.rest).triangles), sortedFaces(bar.surface.triangles));
-  EXPECT_NEAR(totalVolume(built.rest), totalVolume(bar.rest), kVolumeRelTol * totalVolume(bar.rest));
+  EXPECT_NEAR(totalVolume(built.rest), totalVolume(bar.rest),
+              kVolumeRelTol * totalVolume(bar.rest));
   for (Eigen::Index t = 0; t < built.rest.tets.rows(); ++t) {
     EXPECT_GT(tetSignedVolume(built.rest.vertices, built.rest.tets.row(t)), 0.0) << "tet " << t;
   }
