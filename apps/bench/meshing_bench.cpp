@@ -18,7 +18,8 @@
 // Counters are milliseconds per stage, the ratio (validate + embed) / tetgen,
 // tets (TetGen's, and after refinement), Steiner points added, inverted tets
 // left over the examples whose surface does not intersect itself, the number
-// of examples whose surface does ("intersecting"), and peak RSS (getrusage ru_maxrss of the whole
+// of examples whose surface does ("intersecting") and their inverted tets
+// (excluded by prepare), and peak RSS (getrusage ru_maxrss of the whole
 // process so far; sizes run in increasing order, so it is the peak of the
 // largest size run yet). The reported time is the sum of the four stages.
 
@@ -160,7 +161,8 @@ void BM_PrepareCompatibleMeshes(benchmark::State& state) {
 
   double readMs = 0, validateMs = 0, tetgenMs = 0, embedMs = 0;
   long long tets = 0, refinedTets = 0, steiner = 0, surfaceFaces = 0, invertedLeft = 0,
-            intersecting = 0;
+            intersecting = 0, invertedIntersecting = 0;
+    invertedIntersecting = 0;
   for (auto _ : state) {
     auto start = std::chrono::steady_clock::now();
     const SurfaceMesh rest = readSurface(files.rest);
@@ -189,9 +191,11 @@ void BM_PrepareCompatibleMeshes(benchmark::State& state) {
     embedMs = millisecondsSince(start);
     invertedLeft = 0;
     intersecting = 0;
+    invertedIntersecting = 0;
     for (std::size_t k = 0; k < built.examples.size(); ++k) {
       if (built.selfIntersectingPairs[k] > 0) {
         ++intersecting;
+        invertedIntersecting += static_cast<long long>(built.examples[k].invertedTets.size());
       } else {
         invertedLeft += static_cast<long long>(built.examples[k].invertedTets.size());
       }
@@ -214,6 +218,7 @@ void BM_PrepareCompatibleMeshes(benchmark::State& state) {
   state.counters["val+emb/tetgen"] = (validateMs + embedMs) / tetgenMs;
   state.counters["inverted_left"] = static_cast<double>(invertedLeft);
   state.counters["intersecting"] = static_cast<double>(intersecting);
+  state.counters["inverted_intersecting"] = static_cast<double>(invertedIntersecting);
   state.counters["peak_rss_MB"] = peakRssMegabytes();
 }
 

@@ -35,15 +35,6 @@ std::vector<TetElement> buildTetElements(const TetMesh& mesh) {
   return elements;
 }
 
-Eigen::Matrix3d deformationGradient(const Vertices& positions, const Eigen::RowVector4i& tet,
-                                    const TetElement& element) {
-  Eigen::Matrix3d f = Eigen::Matrix3d::Zero();
-  for (int a = 0; a < 4; ++a) {
-    f += positions.row(tet(a)).transpose() * element.gradients.col(a).transpose();
-  }
-  return f;
-}
-
 Eigen::Matrix3d closestRotation(const Eigen::Matrix3d& f) {
   const Eigen::JacobiSVD<Eigen::Matrix3d> svd(f, Eigen::ComputeFullU | Eigen::ComputeFullV);
   Eigen::Matrix3d u = svd.matrixU();

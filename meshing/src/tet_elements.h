@@ -21,9 +21,15 @@ struct TetElement {
 /// whose rest volume is not positive or whose index is out of range.
 std::vector<TetElement> buildTetElements(const TetMesh& mesh);
 
-/// Deformation gradient of tet `t` under `positions` (#V by 3).
-Eigen::Matrix3d deformationGradient(const Vertices& positions, const Eigen::RowVector4i& tet,
-                                    const TetElement& element);
+/// Deformation gradient of tet `t` under `positions` (#V by 3). Inline: the
+/// untangling and ARAP loops call it for every tet of every evaluation.
+inline Eigen::Matrix3d deformationGradient(const Vertices& positions,
+                                           const Eigen::RowVector4i& tet,
+                                           const TetElement& element) {
+  Eigen::Matrix<double, 3, 4> corners;
+  for (int a = 0; a < 4; ++a) corners.col(a) = positions.row(tet(a)).transpose();
+  return corners * element.gradients.transpose();
+}
 
 /// Rotation closest to `f` in the Frobenius norm (SVD, reflection removed);
 /// defined for every f, including det f <= 0.
