@@ -57,17 +57,22 @@ inline Eigen::Vector3d vee(const Eigen::Matrix3d& m) {
 
 namespace so3_detail {
 
-/// Rodrigues' formula on a unit axis u: I + sin(t) [u]x + (1 - cos t) [u]x^2,
-/// with sin t = 2 s c and 1 - cos t = 2 s^2 (s, c the sine and cosine of t/2).
-inline Eigen::Matrix3d rodriguesOnAxis(const Eigen::Vector3d& u, double s, double c) {
-  const double a = 2.0 * s * c, b = 2.0 * s * s;
-  const double x = u.x(), y = u.y(), z = u.z();
+/// I + a [v]x + b [v]x^2, written out: Rodrigues' formula with its two
+/// coefficients given (Kaji–Ochiai §4.1).
+inline Eigen::Matrix3d rodrigues(const Eigen::Vector3d& v, double a, double b) {
+  const double x = v.x(), y = v.y(), z = v.z();
   const double bxy = b * x * y, bxz = b * x * z, byz = b * y * z;
   Eigen::Matrix3d r;
   r << 1.0 - b * (y * y + z * z), bxy - a * z, bxz + a * y,  //
       bxy + a * z, 1.0 - b * (x * x + z * z), byz - a * x,   //
       bxz - a * y, byz + a * x, 1.0 - b * (x * x + y * y);
   return r;
+}
+
+/// Rodrigues' formula on a unit axis u: I + sin(t) [u]x + (1 - cos t) [u]x^2,
+/// with sin t = 2 s c and 1 - cos t = 2 s^2 (s, c the sine and cosine of t/2).
+inline Eigen::Matrix3d rodriguesOnAxis(const Eigen::Vector3d& u, double s, double c) {
+  return rodrigues(u, 2.0 * s * c, 2.0 * s * s);
 }
 
 /// so3Exp for |omega|^2 > kMaxSquaredAngle: the axis is taken from omega /
@@ -107,13 +112,7 @@ inline Eigen::Matrix3d so3Exp(const Eigen::Vector3d& omega) {
     a = 2.0 * s * c / theta;
     b = 2.0 * s * s / theta2;
   }
-  const double x = omega.x(), y = omega.y(), z = omega.z();
-  const double bxy = b * x * y, bxz = b * x * z, byz = b * y * z;
-  Eigen::Matrix3d r;
-  r << 1.0 - b * (y * y + z * z), bxy - a * z, bxz + a * y,  //
-      bxy + a * z, 1.0 - b * (x * x + z * z), byz - a * x,   //
-      bxz - a * y, byz + a * x, 1.0 - b * (x * x + y * y);
-  return r;
+  return so3_detail::rodrigues(omega, a, b);
 }
 
 /// Principal logarithm of a rotation matrix R (3x3, orthonormal, det +1) as a
