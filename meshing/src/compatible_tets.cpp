@@ -93,6 +93,8 @@ struct CompatibleTetBuilder::Impl {
   Eigen::SimplicialLDLT<SparseMatrix> solver;
 #endif
   std::once_flag factorOnce;
+  std::once_flag trianglesOnce;
+  Triangles surfaceTriangles;  // boundary faces, on first use by propagatedRotations
   double diagonal = 0.0;
   double totalVolume = 0.0;  // Σ_t vol_t
   VertexStars stars;
@@ -241,8 +243,8 @@ struct CompatibleTetBuilder::Impl {
   // averaged at its corners, extended harmonically to the interior (the same
   // factorisation, 9 right-hand sides), averaged over each tet's corners and
   // projected back to SO(3).
-  RotationField propagatedRotations(const Vertices& example) const {
-    const Triangles surfaceTriangles = boundarySurface(rest).triangles;
+  RotationField propagatedRotations(const Vertices& example) {
+    std::call_once(trianglesOnce, [this] { surfaceTriangles = boundarySurface(rest).triangles; });
     Eigen::MatrixXd boundary = Eigen::MatrixXd::Zero(surfaceCount, 9);
     for (Eigen::Index f = 0; f < surfaceTriangles.rows(); ++f) {
       auto frame = [&](const Vertices& positions) {
@@ -283,7 +285,7 @@ struct CompatibleTetBuilder::Impl {
   // inverted tets, then the lowest ARAP energy: ARAP can fold strongly
   // compressed regions that harmonic kept valid. With options.stopWhenValid
   // the first candidate without inverted tets ends the search.
-  void arapSearch(const Vertices& example, CompatibleTetResult& result) const {
+  void arapSearch(const Vertices& example, CompatibleTetResult& result) {
     const Eigen::MatrixXd boundary = example;
     Vertices best;
     std::pair<size_t, double> bestKey(SIZE_MAX, INFINITY);
@@ -372,7 +374,7 @@ Vertices CompatibleTetBuilder::harmonicExtension(const Vertices& exampleSurface)
 }
 
 CompatibleTetResult CompatibleTetBuilder::place(const Vertices& exampleSurface) const {
-  const Impl& m = *impl_;
+  Impl& m = *impl_;
   CompatibleTetResult result;
   result.vertices = harmonicExtension(exampleSurface);
   result.invertedTets = invertedTets(result.vertices, m.rest.tets);
