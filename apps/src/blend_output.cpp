@@ -58,6 +58,11 @@ void writeBlendResult(const std::string& vtuPath, const ModelData& model, const 
   const SurfaceMesh surface{positions.topRows(ns), model.surfaceTriangles};
   MeshDataArrays surfaceData;
   surfaceData.pointData.push_back(displacementArray(positions, model.rest.vertices, ns));
+  // The surface keeps the rest's vertex order: vertex i is input vertex i.
+  NamedArray inputIndex{"input_vertex_index", 1, std::vector<double>(static_cast<std::size_t>(ns))};
+  for (Eigen::Index i = 0; i < ns; ++i)
+    inputIndex.values[static_cast<std::size_t>(i)] = static_cast<double>(i);
+  surfaceData.pointData.push_back(std::move(inputIndex));
   writeSurface(withExtension(vtuPath, ".vtp"), surface, surfaceData);
   for (const std::string& f : surfaceFormats)
     writeSurface(withExtension(vtuPath, "." + f), surface);

@@ -30,6 +30,12 @@ TEST_F(BlendCommand, ZeroWeightsGiveTheRestWithQualityArrays) {
   const auto vtp = readVtp(dir_ / "b.vtp");
   EXPECT_LT(maxDistance(pointsOf(vtp), rest.vertices), kInterpolationTolerance);
   EXPECT_EQ(vtp->GetNumberOfPolys(), rest.triangles.rows());
+  vtkDataArray* inputIndex = vtp->GetPointData()->GetArray("input_vertex_index");
+  ASSERT_NE(inputIndex, nullptr);
+  ASSERT_EQ(inputIndex->GetNumberOfTuples(), rest.vertices.rows());
+  for (vtkIdType i = 0; i < inputIndex->GetNumberOfTuples(); ++i) {
+    ASSERT_EQ(inputIndex->GetTuple1(i), static_cast<double>(i));
+  }
 
   const auto vtu = readVtu(dir_ / "b.vtu");
   ASSERT_GT(vtu->GetNumberOfCells(), 0);
