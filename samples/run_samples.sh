@@ -6,9 +6,11 @@
 # (apps/src/make_samples.cpp, from procedural_shapes.h) into OUT_DIR/surfaces,
 # so no mesh files are committed: a 4 pi twisted bar, a cylinder bent into an L
 # and a U, a two-bone limb posed by dual-quaternion and by linear-blend
-# skinning. Committed here: batch.json (the batch spec, copied beside the
-# model because its paths are relative to the spec), probe_handles.json (the
-# deformer's handles) and show_quality.py (pvpython: colour a .pvd by quality).
+# skinning (at 170 degrees LBS folds the elbow into itself: prepare reports
+# the tets that pose cannot embed and leaves them out of the stitch).
+# Committed here: batch.json (the batch spec, copied beside the model because
+# its paths are relative to the spec), probe_handles.json (the deformer's
+# handles) and show_quality.py (pvpython: colour a .pvd by quality).
 set -euo pipefail
 if [ $# -ne 2 ]; then
   sed -n '2,3p' "$0"
@@ -33,8 +35,11 @@ step "prepare: validate, tetrahedralise (TetGen), compatible tet meshes"
 "$tb" prepare --tetrise "$s/bar_rest.obj" "$s/bar_twist4pi.obj" "$s/bar_bend.obj" \
   -o "$out/bar_tetrised.tbm"
 
+step "prepare a pose that intersects itself (warning, excluded tets)"
+"$tb" prepare "$s/limb_rest.obj" "$s/limb_dqs.obj" "$s/limb_lbs170.obj" -o "$out/limb_folded.tbm"
+
 step "inspect"
-"$tb" inspect "$out/bar.tbm" "$out/cyl.tbm" "$out/limb.tbm" "$s/bar_rest.obj"
+"$tb" inspect "$out/bar.tbm" "$out/cyl.tbm" "$out/limb.tbm" "$out/limb_folded.tbm" "$s/bar_rest.obj"
 
 step "blend: half of the 4 pi twist (kaji and dq), the U-bent cylinder halfway"
 mkdir -p "$out/blend"
