@@ -148,7 +148,7 @@ void rethrowForTet(const std::string& method, int example, int tet, const std::e
   std::ostringstream message;
   message << method << ": ";
   if (example >= 0) {
-    message << "example " << example << ", ";
+    message << "example " << example + 1 << ", ";
   }
   message << "tet " << tet << ": " << error.what();
   throw DomainError(message.str());

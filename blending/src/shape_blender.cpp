@@ -28,7 +28,7 @@ ShapeBlender::ShapeBlender(const TetMesh& rest, const std::vector<Vertices>& exa
   for (size_t k = 0; k < examples_.size(); ++k) {
     if (examples_[k].rows() != rest.vertices.rows()) {
       std::ostringstream message;
-      message << "example " << k << " has " << examples_[k].rows()
+      message << "example " << k + 1 << " has " << examples_[k].rows()
               << " vertices but the rest mesh has " << rest.vertices.rows()
               << ": the meshes must be compatible";
       throw InputError(message.str());

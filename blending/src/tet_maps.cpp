@@ -42,7 +42,7 @@ std::vector<Eigen::Matrix3d> deformationGradients(const TetMesh& rest, const Res
                                                   const Vertices& example, int exampleIndex) {
   if (example.rows() != rest.vertices.rows()) {
     std::ostringstream message;
-    message << "example " << exampleIndex << " has " << example.rows()
+    message << "example " << exampleIndex + 1 << " has " << example.rows()
             << " vertices but the rest mesh has " << rest.vertices.rows()
             << ": the meshes must be compatible";
     throw InputError(message.str());
@@ -54,7 +54,7 @@ std::vector<Eigen::Matrix3d> deformationGradients(const TetMesh& rest, const Res
     const double volume = edges.determinant() / 6.0;
     if (!(volume > 0.0)) {
       std::ostringstream message;
-      message << "example " << exampleIndex << ", tet " << j << " has signed volume " << volume
+      message << "example " << exampleIndex + 1 << ", tet " << j << " has signed volume " << volume
               << " (must be > 0): the example is inverted or flat there; fix the example";
       throw InputError(message.str());
     }

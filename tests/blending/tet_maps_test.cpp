@@ -42,7 +42,7 @@ TEST(TetMaps, InvertedExampleTetIsReportedWithExampleTetAndVolume) {
     FAIL() << "inverted example accepted";
   } catch (const InputError& error) {
     const std::string what = error.what();
-    EXPECT_NE(what.find("example 3"), std::string::npos) << what;
+    EXPECT_NE(what.find("example 4"), std::string::npos) << what;  // index 3, counted from 1
     EXPECT_NE(what.find("tet "), std::string::npos) << what;
     EXPECT_NE(what.find("signed volume -"), std::string::npos) << what;
   }

@@ -28,7 +28,8 @@ RestTetData restTetData(const TetMesh& rest);
 
 /// Deformation gradients F_j = D_example,j D_rest,j^-1 (3 by 3, #T of them)
 /// of one example whose vertices (#V by 3, same order as the rest) are
-/// `example`. `exampleIndex` only names the example in error messages.
+/// `example`. `exampleIndex` (0-based) only names the example in error
+/// messages, counted from 1 there as in `tetblend inspect`.
 /// Throws InputError naming the example, the tet and its signed volume when an
 /// example tet has volume <= 0 (an inverted or flat example is never blended
 /// silently), and when the vertex count differs from the rest.
