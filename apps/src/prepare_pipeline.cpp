@@ -96,6 +96,10 @@ ModelData prepareModel(const std::string& restPath, const std::vector<std::strin
   for (const std::string& path : examplePaths) {
     examples.push_back(readSurface(path));
     requireCompatibleExample(rest, examples.back(), path);
+    if (examples.back().vertices == rest.vertices) {
+      say(messages.warning, path + ": every vertex equals the rest's (" + restPath +
+                                "): blending this example changes nothing");
+    }
   }
   progress.advance();
 

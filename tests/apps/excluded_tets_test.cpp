@@ -102,5 +102,15 @@ TEST_F(ExcludedTets, CleanExamplesExcludeNothing) {
   EXPECT_EQ(inspect.out.find("excluded"), std::string::npos) << inspect.out;
 }
 
+TEST_F(ExcludedTets, AnExampleEqualToTheRestIsWarnedAbout) {
+  examples_ = {"limb_dqs.obj", "limb_rest.obj"};
+  const RunResult r = tetblend(prepareArgs(dir_ / "same.tbm"), dir_);
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.err.find("tetblend: warning: " + (dir_ / "limb_rest.obj").string() +
+                       ": every vertex equals the rest's"),
+            std::string::npos)
+      << r.err;
+}
+
 }  // namespace
 }  // namespace tetblend::apps_test
