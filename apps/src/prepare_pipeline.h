@@ -52,10 +52,10 @@ void addPrepareOptions(CLI::App& command, PrepareSettings& settings);
 /// same triangles). Tets that an example inverts whatever the placement (its
 /// surface folds or intersects itself) become the model's excluded tets, with
 /// one warning per such example; settings.strict refuses them instead.
-/// An example equal to the rest is warned about. A rest mesh above
-/// kLargeMeshWarningTets is warned about before the long
-/// steps start; a note gives the tet count and the Steiner points added. Throws InputError naming
-/// the file and the problem.
+/// An example equal to the rest is warned about, and so is a rest mesh above
+/// kLargeMeshWarningTets before the long steps start; a note gives the tet
+/// count and the Steiner points added. Throws InputError naming the file and
+/// the problem.
 ModelData prepareModel(const std::string& restPath, const std::vector<std::string>& examplePaths,
                        const PrepareSettings& settings, const PrepareMessages& messages = {});
 
