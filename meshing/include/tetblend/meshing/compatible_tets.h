@@ -101,8 +101,8 @@ class CompatibleTetBuilder {
   /// not by repair and evaluate.
   /// Throws InputError if a tet is not positively oriented, an index is out of
   /// range, #S is out of [1, #V], a vertex ≥ #S lies on a boundary face, or
-  /// a face is shared by more than 2 tets; NumericalError if the
-  /// factorisation fails.
+  /// a face is shared by more than 2 tets. (place and harmonicExtension throw
+  /// NumericalError if the factorisation fails.)
   CompatibleTetBuilder(const TetMesh& rest, int surfaceVertexCount,
                        const CompatibleTetOptions& options = {});
   ~CompatibleTetBuilder();
