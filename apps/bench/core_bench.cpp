@@ -133,6 +133,9 @@ void runBatched(benchmark::State& state, const std::vector<Input>& inputs, Batch
   state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(kBatchChunk));
 }
 
+void BM_so3_exp_batched(benchmark::State& s) {
+  runBatched<Eigen::Vector3d, Eigen::Matrix3d>(s, corePool().rotationVectors, so3ExpBatch);
+}
 void BM_so3_log_batched(benchmark::State& s) {
   runBatched<Eigen::Matrix3d, Eigen::Vector3d>(s, corePool().rotations, so3LogBatch);
 }
@@ -150,6 +153,7 @@ void BM_psi_batched(benchmark::State& s) {
 }
 
 BENCHMARK(BM_so3_exp);
+BENCHMARK(BM_so3_exp_batched);
 BENCHMARK(BM_so3_exp_eigen);
 BENCHMARK(BM_so3_log);
 BENCHMARK(BM_so3_log_batched);

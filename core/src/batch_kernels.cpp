@@ -267,6 +267,24 @@ void polarLogBlock(const Eigen::Matrix3d* a, PolarLogDecomposition* out, int n) 
 }
 
 /// Runs `block` on consecutive blocks of kBlock elements.
+TETBLEND_BATCH_CLONES
+void so3ExpBlock(const Eigen::Vector3d* omega, Eigen::Matrix3d* out, int n) {
+  Block3 in;
+  Block9 res;
+  bool ok[kBlock];
+  for (int l = 0; l < n; ++l)
+#pragma GCC unroll 3
+    for (int i = 0; i < 3; ++i) in[i][l] = omega[l](i);
+  padZero3(in, n);
+  for (int l = 0; l < kBlock; ++l) {
+    Mat r;
+    ok[l] = batch_detail::so3ExpLane(in[0][l], in[1][l], in[2][l], r);
+#pragma GCC unroll 9
+    for (int k = 0; k < 9; ++k) res[k][l] = r.m[k];
+  }
+  for (int l = 0; l < n; ++l) out[l] = ok[l] ? matrixAt(res, l) : so3Exp(omega[l]);
+}
+
 template <typename In, typename Out, typename Block>
 void forEachBlock(const In* in, Out* out, std::size_t n, Block block) {
   for (std::size_t start = 0; start < n; start += kBlock) {
@@ -275,6 +293,10 @@ void forEachBlock(const In* in, Out* out, std::size_t n, Block block) {
 }
 
 }  // namespace
+
+void so3ExpBatch(const Eigen::Vector3d* omega, Eigen::Matrix3d* out, std::size_t n) {
+  forEachBlock(omega, out, n, so3ExpBlock);
+}
 
 void so3LogBatch(const Eigen::Matrix3d* rotations, Eigen::Vector3d* out, std::size_t n) {
   forEachBlock(rotations, out, n, so3LogBlock);

@@ -15,7 +15,7 @@
 #include "tetblend/core/so3.h"
 #include "tetblend/core/sym3.h"
 
-#define TETBLEND_LANE inline __attribute__((always_inline))
+#define TETBLEND_LANE TETBLEND_LANE_INLINE
 
 namespace tetblend::batch_detail {
 

@@ -15,6 +15,7 @@
 #include "core_test_support.h"
 #include "test_seed.h"
 #include "tetblend/core/error.h"
+#include "tetblend/core/lane_math.h"
 #include "tetblend/core/polar.h"
 #include "tetblend/core/so3.h"
 #include "tetblend/core/sym3.h"
@@ -63,6 +64,31 @@ Eigen::Matrix3d withEigenvalues(std::mt19937& rng, const Eigen::Vector3d& values
 template <typename A, typename B>
 double relativeGap(const A& batched, const B& scalar) {
   return (batched - scalar).stableNorm() / (1.0 + scalar.stableNorm());
+}
+
+TEST(BatchKernels, So3ExpMatchesScalar) {
+  std::mt19937 rng(seed("So3ExpMatchesScalar"));
+  const Eigen::Vector3d axis = Eigen::Vector3d(1.0, -2.0, 0.5).normalized();
+  const double small = so3_detail::kSmallAngle;
+  const double laneMax = 2.0 * lane_math::kSinCosMaxArg;  // |omega| the lanes take
+  std::vector<Eigen::Vector3d> in;
+  // Zero, tiny angles, both sides of the Taylor switch kSmallAngle, pi, turns
+  // beyond 2 pi, both sides of the lanes' sin/cos range (the scalar kernel
+  // takes over above it) and a huge angle.
+  for (double theta : {0.0, 1e-12, 0.5 * small, 2.0 * small, 1.0, M_PI, 7.0, 40.0,
+                       0.999 * laneMax, 1.001 * laneMax, 1e155}) {
+    in.push_back(theta * axis);
+  }
+  std::normal_distribution<double> normal;
+  for (int i = 0; i < kRandomCount; ++i) {
+    in.push_back(test_seed::uniform(rng, 0.0, 30.0) *
+                 Eigen::Vector3d(normal(rng), normal(rng), normal(rng)).normalized());
+  }
+  std::vector<Eigen::Matrix3d> out(in.size());
+  so3ExpBatch(in.data(), out.data(), in.size());
+  for (std::size_t i = 0; i < in.size(); ++i) {
+    EXPECT_LE(relativeGap(out[i], so3Exp(in[i])), kBatchVsScalarTol) << "element " << i;
+  }
 }
 
 TEST(BatchKernels, So3LogMatchesScalar) {

@@ -23,6 +23,11 @@
 
 namespace tetblend {
 
+/// out[i] = so3Exp(omega[i]) (Rodrigues, Kaji–Ochiai §4.1), omega in
+/// radians; any finite omega (angles past the lanes' sin/cos range go to the
+/// scalar kernel).
+void so3ExpBatch(const Eigen::Vector3d* omega, Eigen::Matrix3d* out, std::size_t n);
+
 /// out[i] = so3Log(rotations[i]) (principal log, Kaji–Ochiai eq. (7)),
 /// radians.
 void so3LogBatch(const Eigen::Matrix3d* rotations, Eigen::Vector3d* out, std::size_t n);

@@ -12,6 +12,15 @@
 #include <cstdint>
 #include <cstring>
 
+/// The lane functions are forced inline: the batched kernels' loops
+/// vectorise only when every call in them is inlined, and with -march=native
+/// GCC chose to call them instead (4-5 times slower; issue 14).
+#if defined(__GNUC__)
+#define TETBLEND_LANE_INLINE inline __attribute__((always_inline))
+#else
+#define TETBLEND_LANE_INLINE inline
+#endif
+
 namespace tetblend::lane_math {
 
 /// Largest |x| for expLane/expm1Lane (and the largest k of 2^k they build):
@@ -26,13 +35,13 @@ constexpr double kLn2Lo = 1.90821492927058770002e-10;
 constexpr double kInvLn2 = 1.44269504088896338700e+00;
 constexpr double kRoundShift = 6755399441055744.0;  // 1.5 * 2^52: adding rounds to an integer
 
-inline std::uint64_t bitsOf(double x) {
+TETBLEND_LANE_INLINE std::uint64_t bitsOf(double x) {
   std::uint64_t u;
   std::memcpy(&u, &x, sizeof u);
   return u;
 }
 
-inline double fromBits(std::uint64_t u) {
+TETBLEND_LANE_INLINE double fromBits(std::uint64_t u) {
   double x;
   std::memcpy(&x, &u, sizeof x);
   return x;
@@ -40,7 +49,7 @@ inline double fromBits(std::uint64_t u) {
 
 /// expm1(r) for |r| <= ln2/2 by its Taylor series through r^15 (dropped term
 /// < 0.35^15/16! ~ 7e-21 relative to r).
-inline double expm1Reduced(double r) {
+TETBLEND_LANE_INLINE double expm1Reduced(double r) {
   double p = 1.0 / 1307674368000.0;  // 1/15!
   p = p * r + 1.0 / 87178291200.0;
   p = p * r + 1.0 / 6227020800.0;
@@ -62,7 +71,7 @@ inline double expm1Reduced(double r) {
 /// exp = 2^k (1 + expm1(r)), expm1 = (2^k - 1) + 2^k expm1(r) (exact
 /// expm1(r) for k = 0, no cancellation otherwise since |x| > ln2/2).
 /// Both within 2 ulp of the correctly rounded value (tested).
-inline void expExpm1Lane(double x, double& e, double& em1) {
+TETBLEND_LANE_INLINE void expExpm1Lane(double x, double& e, double& em1) {
   const double shifted = x * kInvLn2 + kRoundShift;
   const double k = shifted - kRoundShift;
   const double r = (x - k * kLn2Hi) - k * kLn2Lo;
@@ -75,14 +84,14 @@ inline void expExpm1Lane(double x, double& e, double& em1) {
 }
 
 /// exp(x) for |x| <= kExpMaxArg, within 2 ulp.
-inline double expLane(double x) {
+TETBLEND_LANE_INLINE double expLane(double x) {
   double e, em1;
   expExpm1Lane(x, e, em1);
   return e;
 }
 
 /// expm1(x) for |x| <= kExpMaxArg, within 2 ulp.
-inline double expm1Lane(double x) {
+TETBLEND_LANE_INLINE double expm1Lane(double x) {
   double e, em1;
   expExpm1Lane(x, e, em1);
   return em1;
@@ -91,7 +100,7 @@ inline double expm1Lane(double x) {
 /// log(x) for positive normal finite x (fdlibm's reduction: x = 2^e m, m in
 /// [sqrt(1/2), sqrt 2), log m = f - s (f - R), s = f/(2 + f), R the atanh
 /// series 2 s^2/3 + 2 s^4/5 + ... through s^22 (dropped < 1e-18)). Within 2 ulp.
-inline double logLane(double x) {
+TETBLEND_LANE_INLINE double logLane(double x) {
   const std::uint64_t u = bitsOf(x);
   const std::uint64_t mantissa = (u & 0x000fffffffffffffULL) | 0x3ff0000000000000ULL;
   double m = fromBits(mantissa);  // [1, 2)
@@ -121,7 +130,7 @@ inline double logLane(double x) {
 
 /// log1p(x) for x > -1 with 1 + x normal (Goldberg's correction: log(u) -
 /// ((u - 1) - x)/u, u = fl(1 + x)). Within 3 ulp.
-inline double log1pLane(double x) {
+TETBLEND_LANE_INLINE double log1pLane(double x) {
   const double u = 1.0 + x;
   const double correction = u == 1.0 ? x : ((u - 1.0) - x) / u;
   return u == 1.0 ? x : logLane(u) - correction;
@@ -131,7 +140,7 @@ inline double log1pLane(double x) {
 /// tan(pi/8) and the atan series through t^43 (dropped < 2e-18). Within 3 ulp:
 /// the rounding of min/max(|x|, |y|) alone moves the result by up to one ulp
 /// where atan(a) < 1/2 <= a.
-inline double atan2Lane(double y, double x) {
+TETBLEND_LANE_INLINE double atan2Lane(double y, double x) {
   constexpr double kPiO4 = 7.85398163397448278999e-01;
   constexpr double kPiO2 = 1.57079632679489655800e+00;
   constexpr double kPi = 3.14159265358979311600e+00;
@@ -175,7 +184,7 @@ inline double atan2Lane(double y, double x) {
 /// Cody–Waite reduction (fdlibm's pio2_1, pio2_2, pio2_3), |r| <= pi/4, Taylor
 /// series through r^19 (sin) and r^20 (cos), quadrant by k mod 4. Within
 /// 2 ulp of the C library.
-inline void sinCosLane(double x, double& sine, double& cosine) {
+TETBLEND_LANE_INLINE void sinCosLane(double x, double& sine, double& cosine) {
   constexpr double kTwoOverPi = 6.36619772367581382433e-01;
   constexpr double kPio2_1 = 1.57079632673412561417e+00;
   constexpr double kPio2_2 = 6.07710050630396597660e-11;
