@@ -59,7 +59,7 @@ TetMesh readMedit(const std::string& path) {
       const std::string_view d = nextToken("the dimension");
       if (parseInteger(d, path, tokens.lineNumber(), "dimension") != 3) {
         throwAtLine(path, tokens.lineNumber(),
-                    "Dimension " + std::string(d) + ": only 3D meshes are supported");
+                    "Dimension " + printableToken(d) + ": only 3D meshes are supported");
       }
     } else if (keyword == "Vertices") {
       const int count = nextCount("the vertex count");
@@ -92,14 +92,14 @@ TetMesh readMedit(const std::string& path) {
       }
     } else if (keyword == "Hexahedra" || keyword == "Prisms" || keyword == "Pyramids") {
       throwAtLine(path, line,
-                  "section '" + std::string(keyword) +
-                      "': only tetrahedra are supported; convert the cells to tets");
+                  "section " + quoteToken(keyword) +
+                      ": only tetrahedra are supported; convert the cells to tets");
     } else {
       const int size = skippedEntrySize(keyword);
       if (size < 0) {
         throwAtLine(path, line,
-                    "unknown keyword '" + std::string(keyword) +
-                        "': not an ascii Medit .mesh file tetblend can read");
+                    "unknown keyword " + quoteToken(keyword) +
+                        ": not an ascii Medit .mesh file tetblend can read");
       }
       const int count = nextCount("the " + std::string(keyword) + " count");
       for (long long i = 0; i < static_cast<long long>(count) * size; ++i) {

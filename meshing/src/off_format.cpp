@@ -19,8 +19,8 @@ SurfaceMesh readOff(const std::string& path) {
   if (!isOff || keyword.find('4') != std::string_view::npos ||
       (keyword.size() > 3 && keyword[keyword.size() - 4] == 'n')) {
     throwAtLine(path, lines.lineNumber(),
-                "expected the header 'OFF' (3D), found '" + std::string(keyword) +
-                    "': only 3D OFF files are supported");
+                "expected the header 'OFF' (3D), found " + quoteToken(keyword) +
+                    ": only 3D OFF files are supported");
   }
   std::vector<std::string_view> counts(lines.tokens().begin() + 1, lines.tokens().end());
   std::size_t countLine = lines.lineNumber();

@@ -157,8 +157,8 @@ std::vector<Element> parseHeader(const std::string& path, TextLines& lines, Enco
         encoding = Encoding::BinaryBig;
       } else {
         throwAtLine(path, line,
-                    "unknown PLY format '" + std::string(t[1]) +
-                        "': expected ascii, binary_little_endian or binary_big_endian");
+                    "unknown PLY format " + quoteToken(t[1]) +
+                        ": expected ascii, binary_little_endian or binary_big_endian");
       }
       haveFormat = true;
     } else if (t[0] == "element") {
@@ -181,7 +181,7 @@ std::vector<Element> parseHeader(const std::string& path, TextLines& lines, Enco
       p.name = std::string(t[expected - 1]);
       elements.back().properties.push_back(p);
     } else {
-      throwAtLine(path, line, "unknown header keyword '" + std::string(t[0]) + "': fix the header");
+      throwAtLine(path, line, "unknown header keyword " + quoteToken(t[0]) + ": fix the header");
     }
   }
   throwAtLine(path, lines.lineNumber(), "the header has no 'end_header' line: fix the header");
@@ -260,7 +260,9 @@ SurfaceMesh readPly(const std::string& path) {
       axes.push_back(p.name == "x" ? 0 : p.name == "y" ? 1 : p.name == "z" ? 2 : -1);
     }
     for (int i = 0; i < e.count; ++i) {
-      const auto element = [&e, i] { return e.name + " " + std::to_string(i) + " (0-based)"; };
+      const auto element = [&e, i] {
+        return printableToken(e.name) + " " + std::to_string(i) + " (0-based)";
+      };
       source.beginRow(element);
       const std::size_t rowPosition = source.position();
       const auto where = [&] { return source.where(rowPosition); };
@@ -268,8 +270,8 @@ SurfaceMesh readPly(const std::string& path) {
         const Property& p = e.properties[k];
         const int axis = axes[k];
         if (!p.isList) {
-          const double value =
-              source.value(p.type, [&] { return "property '" + p.name + "' of " + element(); });
+          const double value = source.value(
+              p.type, [&] { return "property " + quoteToken(p.name) + " of " + element(); });
           if (isVertex && axis >= 0) {
             mesh.vertices(i, axis) = value;
             xyzFound |= 1 << axis;

@@ -25,9 +25,8 @@ Vertices readNode(const std::string& path, long long& base) {
   const auto& header = lines.tokens();
   const int count = parseCount(header[0], path, lines.lineNumber(), "point count");
   if (header.size() >= 2 && parseInteger(header[1], path, lines.lineNumber(), "dimension") != 3) {
-    throwAtLine(
-        path, lines.lineNumber(),
-        "dimension '" + std::string(header[1]) + "' is not 3: only 3D meshes are supported");
+    throwAtLine(path, lines.lineNumber(),
+                "dimension " + quoteToken(header[1]) + " is not 3: only 3D meshes are supported");
   }
   Vertices vertices(count, 3);
   base = 0;

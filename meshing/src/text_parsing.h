@@ -110,6 +110,15 @@ long long parseInteger(std::string_view token, const std::string& path, std::siz
 int parseCount(std::string_view token, const std::string& path, std::size_t line,
                const std::string& what);
 
+/// `token` for an error message: at most kMaxQuotedBytes of it (then "..."),
+/// bytes outside printable ASCII and backslashes written as \xNN, so that a
+/// binary or hostile file cannot put control sequences or megabytes on the
+/// terminal.
+std::string printableToken(std::string_view token);
+
+/// printableToken(token) in single quotes.
+std::string quoteToken(std::string_view token);
+
 /// Parses tokens[first..first+3) as the position of vertex `vertex`
 /// (0-based), refusing missing values and NaN/Inf.
 Eigen::RowVector3d parseVertex(const std::vector<std::string_view>& tokens, std::size_t first,

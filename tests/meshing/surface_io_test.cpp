@@ -270,6 +270,27 @@ TEST(SurfaceIo, MalformedFilesThrowInputErrorNamingLineAndValue) {
   }
 }
 
+// Issue 11, item 3: tokens quoted in errors went to the terminal verbatim,
+// control bytes and megabytes included.
+TEST(SurfaceIo, QuotedTokensAreEscapedAndShortened) {
+  // Far longer than any quoted token may be; the message must stay a line.
+  constexpr std::size_t kHugeToken = 100000;
+  constexpr std::size_t kMaxMessage = 300;
+  TempDir dir;
+  const std::string hostile = "1\x1b[2J\x07" + std::string(kHugeToken, '9');
+  writeText(dir.file("evil.obj"), "v 0 0 " + hostile + "x\n");
+  writeText(dir.file("evil.off"), "\x1b]0;owned\x07OFX\n");
+  for (const char* name : {"evil.obj", "evil.off"}) {
+    SCOPED_TRACE(name);
+    const std::string message = messageOf(dir.file(name));
+    EXPECT_NE(message.find("\\x1b"), std::string::npos) << message;
+    EXPECT_LT(message.size(), kMaxMessage) << message;
+    for (const char c : message) EXPECT_GE(static_cast<unsigned char>(c), 0x20) << message;
+  }
+  EXPECT_NE(messageOf(dir.file("evil.obj")).find("found '1\\x1b[2J\\x07999"), std::string::npos);
+  EXPECT_NE(messageOf(dir.file("evil.obj")).find("99...'"), std::string::npos);
+}
+
 TEST(SurfaceIo, VtpWithPolygonsOrStripsIsRefused) {
   TempDir dir;
   auto points = vtkSmartPointer<vtkPoints>::New();
