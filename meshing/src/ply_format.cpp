@@ -29,6 +29,7 @@ struct Element {
   std::string name;
   int count = 0;
   std::vector<Property> properties;
+  std::size_t line = 0;  ///< header line of the declaration
 };
 
 bool scalarFromName(std::string_view name, Scalar& type) {
@@ -164,7 +165,16 @@ std::vector<Element> parseHeader(const std::string& path, TextLines& lines, Enco
     } else if (t[0] == "element") {
       if (t.size() < 3)
         throwAtLine(path, line, "expected 'element <name> <count>': fix the header");
-      elements.push_back({std::string(t[1]), parseCount(t[2], path, line, "element count"), {}});
+      for (const Element& earlier : elements) {
+        if (earlier.name == t[1]) {
+          throwAtLine(path, line,
+                      "element " + quoteToken(t[1]) + " is declared again (first on line " +
+                          std::to_string(earlier.line) +
+                          "): each element may be declared once; fix the header");
+        }
+      }
+      elements.push_back(
+          {std::string(t[1]), parseCount(t[2], path, line, "element count"), {}, line});
     } else if (t[0] == "property") {
       if (elements.empty()) throwAtLine(path, line, "'property' before any 'element'");
       Property p;

@@ -270,6 +270,29 @@ TEST(SurfaceIo, MalformedFilesThrowInputErrorNamingLineAndValue) {
   }
 }
 
+// Issue 11, item 1: the vertex matrix was sized from the last 'element vertex'
+// while the rows of every declaration were read into it (heap overflow).
+TEST(SurfaceIo, PlyElementDeclaredTwiceIsRefusedNamingBothLines) {
+  TempDir dir;
+  const std::string header =
+      "element vertex 40\nproperty double x\nproperty double y\nproperty double z\n"
+      "element vertex 3\nproperty double x\nproperty double y\nproperty double z\nend_header\n";
+  io_test::ByteBuilder ascii(true), binary(true);
+  ascii.text("ply\nformat ascii 1.0\n" + header);
+  binary.text("ply\nformat binary_little_endian 1.0\n" + header);
+  for (int row = 0; row < 43; ++row) {
+    ascii.text("1 2 3\n");
+    binary.put(1.0).put(2.0).put(3.0);
+  }
+  for (const auto* builder : {&ascii, &binary}) {
+    writeText(dir.file("twice.ply"), builder->bytes());
+    const std::string message = messageOf(dir.file("twice.ply"));
+    EXPECT_NE(message.find("twice.ply:7: element 'vertex' is declared again (first on line 3)"),
+              std::string::npos)
+        << message;
+  }
+}
+
 // Issue 11, item 3: tokens quoted in errors went to the terminal verbatim,
 // control bytes and megabytes included.
 TEST(SurfaceIo, QuotedTokensAreEscapedAndShortened) {
