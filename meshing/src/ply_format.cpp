@@ -4,6 +4,7 @@
 // "vertex_index") whose lists all have 3 entries. Other elements are skipped.
 // Errors in binary data name the byte offset instead of a line.
 
+#include <algorithm>
 #include <cstdint>
 #include <cstring>
 #include <string>
@@ -242,6 +243,41 @@ class ValueSource {
   std::size_t column_ = 0;
 };
 
+bool isIndexList(const Property& p) {
+  return p.isList && (p.name == "vertex_indices" || p.name == "vertex_index");
+}
+
+// Checks, before anything is allocated, that a vertex element with rows has
+// x, y and z and a face element with rows its index list.
+void checkElements(const std::string& path, const std::vector<Element>& elements) {
+  for (const Element& e : elements) {
+    if (e.count == 0) continue;
+    int axes = 0;
+    bool indices = false;
+    for (const Property& p : e.properties) {
+      if (!p.isList) axes |= p.name == "x" ? 1 : p.name == "y" ? 2 : p.name == "z" ? 4 : 0;
+      indices = indices || isIndexList(p);
+    }
+    if (e.name == "vertex" && axes != 7) {
+      throw InputError(path + ": the vertex element lacks x, y or z properties");
+    }
+    if (e.name == "face" && !indices) {
+      throw InputError(path + ": the face element has no 'vertex_indices' list property");
+    }
+  }
+}
+
+// The fewest bytes one row of `e` takes: in binary its fixed-size properties
+// plus the count of each list, in ascii one byte per property (at least one:
+// a row is a line with a token).
+std::size_t minimumRowBytes(const Element& e, Encoding encoding) {
+  std::size_t bytes = 0;
+  for (const Property& p : e.properties) {
+    bytes += encoding == Encoding::Ascii ? 1 : scalarSize(p.isList ? p.countType : p.type);
+  }
+  return encoding == Encoding::Ascii ? std::max<std::size_t>(bytes, 1) : bytes;
+}
+
 }  // namespace
 
 SurfaceMesh readPly(const std::string& path) {
@@ -254,17 +290,21 @@ SurfaceMesh readPly(const std::string& path) {
     if (e.name == "vertex") vertexCount = e.count;
   }
   if (vertexCount < 0) throw InputError(path + ": no 'vertex' element in the header");
+  checkElements(path, elements);
+  // Rows are allocated for what the data after the header can hold, not for
+  // the header's counts (which may be wrong by billions).
+  const std::size_t available = text.size() - std::min(text.size(), lines.endOffset());
 
   SurfaceMesh mesh;
-  mesh.vertices.setZero(vertexCount, 3);
+  mesh.vertices.resize(0, 3);
   mesh.triangles.resize(0, 3);
   ValueSource source(path, text, lines, encoding);
   for (const Element& e : elements) {
     const bool isVertex = e.name == "vertex";
     const bool isFace = e.name == "face";
-    if (isFace) mesh.triangles.resize(e.count, 3);
-    int xyzFound = 0;
-    bool indicesFound = false;
+    const Eigen::Index rows = rowsToAllocate(e.count, minimumRowBytes(e, encoding), available);
+    if (isVertex) mesh.vertices.resize(rows, 3);
+    if (isFace) mesh.triangles.resize(rows, 3);
     std::vector<int> axes;
     for (const Property& p : e.properties) {
       axes.push_back(p.name == "x" ? 0 : p.name == "y" ? 1 : p.name == "z" ? 2 : -1);
@@ -274,6 +314,8 @@ SurfaceMesh readPly(const std::string& path) {
         return printableToken(e.name) + " " + std::to_string(i) + " (0-based)";
       };
       source.beginRow(element);
+      if (isVertex) growRows(mesh.vertices, i, e.count);
+      if (isFace) growRows(mesh.triangles, i, e.count);
       const std::size_t rowPosition = source.position();
       const auto where = [&] { return source.where(rowPosition); };
       for (std::size_t k = 0; k < e.properties.size(); ++k) {
@@ -284,13 +326,12 @@ SurfaceMesh readPly(const std::string& path) {
               p.type, [&] { return "property " + quoteToken(p.name) + " of " + element(); });
           if (isVertex && axis >= 0) {
             mesh.vertices(i, axis) = value;
-            xyzFound |= 1 << axis;
           }
           continue;
         }
         const double corners =
             source.value(p.countType, [&] { return "list length of " + element(); });
-        const bool indices = isFace && (p.name == "vertex_indices" || p.name == "vertex_index");
+        const bool indices = isFace && isIndexList(p);
         if (indices && corners != 3) {
           throw InputError(
               path + ":" + where() + ": face " + std::to_string(i) + " (0-based) has " +
@@ -309,17 +350,8 @@ SurfaceMesh readPly(const std::string& path) {
           }
           mesh.triangles(i, c) = static_cast<int>(value);
         }
-        indicesFound = indicesFound || indices;
       }
-      if (isVertex) {
-        if (xyzFound != 7) {
-          throw InputError(path + ": the vertex element lacks x, y or z properties");
-        }
-        checkFiniteVertex(mesh.vertices.row(i), path, where(), i);
-      }
-      if (isFace && !indicesFound) {
-        throw InputError(path + ": the face element has no 'vertex_indices' list property");
-      }
+      if (isVertex) checkFiniteVertex(mesh.vertices.row(i), path, where(), i);
     }
   }
   return mesh;

@@ -146,6 +146,13 @@ int parseCount(std::string_view token, const std::string& path, std::size_t line
   return static_cast<int>(value);
 }
 
+Eigen::Index rowsToAllocate(long long count, std::size_t bytesEach, std::size_t available) {
+  if (count <= 0) return 0;
+  if (bytesEach == 0) return static_cast<Eigen::Index>(count);
+  return static_cast<Eigen::Index>(
+      std::min<unsigned long long>(static_cast<unsigned long long>(count), available / bytesEach));
+}
+
 void checkFiniteVertex(const Eigen::RowVector3d& position, const std::string& path,
                        const std::string& where, int vertex) {
   for (int c = 0; c < 3; ++c) {

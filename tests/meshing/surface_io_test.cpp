@@ -293,6 +293,35 @@ TEST(SurfaceIo, PlyElementDeclaredTwiceIsRefusedNamingBothLines) {
   }
 }
 
+// Issue 11, item 2: a count near 2^31 in a header allocated gigabytes
+// (std::bad_alloc, no file named) before the data was read. Rows are now
+// allocated for what the data can hold, and the reader fails where it ends.
+TEST(SurfaceIo, HeaderCountsBeyondTheDataEndInOneErrorNamingTheFile) {
+  const std::vector<Malformed> cases = {
+      {"a.ply",
+       "ply\nformat ascii 1.0\nelement vertex 2147483647\nproperty double x\nproperty double "
+       "y\nproperty double z\nend_header\n0 0 0\n",
+       "a.ply:8: file ends before vertex 1 (0-based): the file is truncated"},
+      {"a.ply",
+       "ply\nformat binary_little_endian 1.0\nelement vertex 0\nproperty float x\nproperty float "
+       "y\nproperty float z\nelement face 2147483647\nproperty list uchar int vertex_indices\n"
+       "end_header\n\x03",
+       "a.ply: byte offset 179: file ends inside list entry of face 0 (0-based)"},
+      {"a.ply", "ply\nformat ascii 1.0\nelement vertex 2147483647\nproperty double y\nend_header\n",
+       "a.ply: the vertex element lacks x, y or z properties"},
+      {"a.off", "OFF\n2147483647 0 0\n0 0 0\n",
+       "a.off:3: file ends after 1 of 2147483647 vertices"},
+      {"a.off", "OFF 0 2147483000 0\n", "a.off:1: file ends after 0 of 2147483000 faces"},
+  };
+  TempDir dir;
+  for (const Malformed& c : cases) {
+    SCOPED_TRACE(c.content);
+    writeText(dir.file(c.file), c.content);
+    const std::string message = messageOf(dir.file(c.file));
+    EXPECT_NE(message.find(c.expected), std::string::npos) << message;
+  }
+}
+
 // Issue 11, item 3: tokens quoted in errors went to the terminal verbatim,
 // control bytes and megabytes included.
 TEST(SurfaceIo, QuotedTokensAreEscapedAndShortened) {
