@@ -112,6 +112,23 @@ int resolveThreads(int threads) {
   return std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
 }
 
+std::string outOfMemoryMessage(const std::vector<std::string>& args) {
+  std::string files;
+  for (std::size_t i = 1; i < args.size(); ++i) {
+    if (args[i] == "-o" || args[i] == "--output") {
+      ++i;
+      continue;
+    }
+    std::error_code ec;
+    if (args[i].rfind("-", 0) != 0 && fs::is_regular_file(args[i], ec)) {
+      files += (files.empty() ? "" : ", ") + args[i];
+    }
+  }
+  const std::string command = args.empty() ? "tetblend" : "'tetblend " + args.front() + "'";
+  return "out of memory in " + command + (files.empty() ? "" : " on " + files) +
+         ": an input is damaged (a wrong count) or too large for this machine";
+}
+
 std::string formatNumber(double value) {
   char buffer[32];
   const auto [end, ec] = std::to_chars(buffer, buffer + sizeof buffer, value);

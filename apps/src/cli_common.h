@@ -52,6 +52,11 @@ class ThreadLimit {
 /// Number of worker threads to use for `threads` (0 = hardware concurrency).
 int resolveThreads(int threads);
 
+/// The error line for a std::bad_alloc that escaped a subcommand; `args` is
+/// the command line without the program name. Names the subcommand and the
+/// arguments that are existing files other than -o/--output.
+std::string outOfMemoryMessage(const std::vector<std::string>& args);
+
 /// Prints "tetblend: warning: <line>" on stderr (always, --quiet or not).
 void printWarning(const std::string& line);
 

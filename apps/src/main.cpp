@@ -6,8 +6,11 @@
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <exception>
+#include <new>
 #include <string>
+#include <vector>
 
+#include "cli_common.h"
 #include "commands.h"
 
 namespace {
@@ -59,6 +62,9 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     if (e.get_exit_code() == 0) return app.exit(e);  // --help, --version
     return fail(std::string(e.what()) + " (see 'tetblend --help')", 2);
+  } catch (const std::bad_alloc&) {
+    return fail(tetblend::cli::outOfMemoryMessage(std::vector<std::string>(argv + 1, argv + argc)),
+                1);
   } catch (const std::exception& e) {
     return fail(e.what(), 1);
   }
