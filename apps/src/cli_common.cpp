@@ -11,6 +11,7 @@
 #include <thread>
 
 #include "tetblend/core/error.h"
+#include "tetblend/meshing/atomic_file.h"
 
 namespace tetblend::cli {
 
@@ -110,6 +111,20 @@ ThreadLimit::~ThreadLimit() = default;
 int resolveThreads(int threads) {
   if (threads > 0) return threads;
   return std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+}
+
+void checkOutputs(const std::vector<std::string>& outputs, const std::vector<std::string>& inputs) {
+  for (const std::string& output : outputs) {
+    const std::string reason = nonRegularOutputReason(output);
+    if (!reason.empty()) throw InputError(output + ": " + reason + "; choose another output name");
+    for (const std::string& input : inputs) {
+      std::error_code ec;
+      if (fs::equivalent(output, input, ec) && !ec) {
+        throw InputError(output + ": is the same file as the input " + input +
+                         "; writing it would destroy the input: choose another output name");
+      }
+    }
+  }
 }
 
 std::string outOfMemoryMessage(const std::vector<std::string>& args) {

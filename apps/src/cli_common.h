@@ -52,6 +52,12 @@ class ThreadLimit {
 /// Number of worker threads to use for `threads` (0 = hardware concurrency).
 int resolveThreads(int threads);
 
+/// Refuses, before any work, to write `outputs` that would lose data: an
+/// output that is the same file (device and inode) as one of `inputs`, or
+/// that exists and is not a regular file (a symbolic link, a directory, a
+/// FIFO, a socket or a device). InputError naming the output (and the input).
+void checkOutputs(const std::vector<std::string>& outputs, const std::vector<std::string>& inputs);
+
 /// The error line for a std::bad_alloc that escaped a subcommand; `args` is
 /// the command line without the program name. Names the subcommand and the
 /// arguments that are existing files other than -o/--output.

@@ -1,8 +1,9 @@
 // Issue 11: no crash on any input, no input ever overwritten. Each test is
 // the regression test of one item of the issue, named in its comment.
 
+#include <sys/stat.h>
+
 #include <cstdint>
-#include <limits>
 
 #include "apps_test_support.h"
 #include "cli_common.h"
@@ -81,6 +82,70 @@ TEST_F(Reliability, OutOfMemoryIsOneLineNamingTheCommandAndInput) {
   EXPECT_EQ(cli::outOfMemoryMessage({"prepare", file("bar_rest.obj"), "-o", file("bar_bend.obj")})
                 .rfind("out of memory in 'tetblend prepare' on " + file("bar_rest.obj") + ": ", 0),
             0u);
+}
+
+// Item 4: `prepare R.obj E.obj -o R.obj` replaced the rest surface, and
+// `blend --rest r.vtp ... -o r.vtu` replaced r.vtp with the blend's surface.
+TEST_F(Reliability, OutputThatIsAnInputIsRefusedBeforeAnyWork) {
+  fs::copy_file(dir_ / "bar_rest.obj", dir_ / "r.vtp");
+  fs::create_hard_link(dir_ / "bar_bend.obj", dir_ / "alias.tbm");
+  const std::string rest = slurp(dir_ / "bar_rest.obj");
+  const std::vector<std::string> before = listDir(dir_);
+  const struct {
+    std::vector<std::string> args;
+    std::string output, input;
+  } cases[] = {
+      {{"prepare", file("bar_rest.obj"), file("bar_bend.obj"), "-o", file("bar_rest.obj")},
+       file("bar_rest.obj"),
+       file("bar_rest.obj")},
+      {{"prepare", file("bar_rest.obj"), file("bar_bend.obj"), "-o",
+        (dir_ / "." / "alias.tbm").string()},
+       (dir_ / "." / "alias.tbm").string(),
+       file("bar_bend.obj")},
+      {{"blend", "--rest", file("r.vtp"), "--example", file("bar_bend.obj"), "-w", "0.5", "-o",
+        file("r.vtu")},
+       file("r.vtp"),
+       file("r.vtp")},
+      {{"deform", file("bar_rest.obj"), "--handles", file("bar_bend.obj"), "-o",
+        file("bar_bend.obj")},
+       file("bar_bend.obj"),
+       file("bar_bend.obj")},
+  };
+  for (const auto& c : cases) {
+    SCOPED_TRACE(c.args[0] + " -o " + c.output);
+    const RunResult r = tetblend(c.args, dir_);
+    expectOneLineError(r);
+    EXPECT_NE(r.err.find(c.output + ": is the same file as the input " + c.input),
+              std::string::npos)
+        << r.err;
+  }
+  EXPECT_EQ(listDir(dir_), before);
+  EXPECT_EQ(slurp(dir_ / "bar_rest.obj"), rest);
+}
+
+// Item 4: an output that exists and is not a regular file is refused with
+// the reason, before any work and without touching it.
+TEST_F(Reliability, OutputThatIsNotARegularFileIsRefusedWithTheReason) {
+  fs::create_directory(dir_ / "folder.tbm");
+  fs::create_symlink(dir_ / "bar_twist4pi.obj", dir_ / "link.tbm");
+  ASSERT_EQ(::mkfifo((dir_ / "pipe.tbm").c_str(), 0600), 0);
+  const std::vector<std::string> before = listDir(dir_);
+  const struct {
+    std::string output;
+    const char* reason;
+  } cases[] = {{file("folder.tbm"), "is a directory"},
+               {file("link.tbm"), "is a symbolic link"},
+               {file("pipe.tbm"), "is a FIFO"},
+               {"/dev/null", "is a device"}};
+  for (const auto& c : cases) {
+    SCOPED_TRACE(c.output);
+    const RunResult r = tetblend(
+        {"prepare", file("bar_rest.obj"), file("bar_bend.obj"), "-o", c.output, "--quiet"}, dir_);
+    expectOneLineError(r);
+    EXPECT_NE(r.err.find(c.output + ": " + c.reason), std::string::npos) << r.err;
+  }
+  EXPECT_EQ(listDir(dir_), before);
+  EXPECT_TRUE(fs::is_symlink(dir_ / "link.tbm"));
 }
 
 }  // namespace

@@ -343,6 +343,33 @@ TEST(SurfaceIo, QuotedTokensAreEscapedAndShortened) {
   EXPECT_NE(messageOf(dir.file("evil.obj")).find("99...'"), std::string::npos);
 }
 
+// Issue 11, item 4 (backstop under the command line's own check): the atomic
+// writer renamed over whatever the target was.
+TEST(SurfaceIo, WriterRefusesTargetsThatAreNotRegularFiles) {
+  TempDir dir;
+  writeText(dir.file("kept.obj"), "v 0 0 0\n");
+  io_test::fs::create_directory(dir.file("folder.obj"));
+  io_test::fs::create_symlink(dir.file("kept.obj"), dir.file("link.obj"));
+  const struct {
+    const char* name;
+    const char* reason;
+  } cases[] = {{"folder.obj", "is a directory"}, {"link.obj", "is a symbolic link"}};
+  for (const auto& c : cases) {
+    SCOPED_TRACE(c.name);
+    std::string message = "no InputError";
+    try {
+      writeSurface(dir.file(c.name), hardSurface());
+    } catch (const InputError& e) {
+      message = e.what();
+    }
+    EXPECT_NE(message.find(dir.file(c.name) + ": " + c.reason), std::string::npos) << message;
+  }
+  EXPECT_TRUE(io_test::fs::is_directory(dir.file("folder.obj")));
+  EXPECT_TRUE(io_test::fs::is_symlink(dir.file("link.obj")));
+  EXPECT_EQ(io_test::readText(dir.file("kept.obj")), "v 0 0 0\n");
+  EXPECT_EQ(dir.entryCount(), 3);
+}
+
 TEST(SurfaceIo, VtpWithPolygonsOrStripsIsRefused) {
   TempDir dir;
   auto points = vtkSmartPointer<vtkPoints>::New();
