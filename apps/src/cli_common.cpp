@@ -94,8 +94,10 @@ void addQuietOption(CLI::App& command, bool& quiet) {
 }
 
 void addThreadsOption(CLI::App& command, int& threads) {
-  command.add_option("--threads", threads, "worker threads; 0 = all cores")
-      ->check(CLI::NonNegativeNumber)
+  command
+      .add_option("--threads", threads,
+                  "worker threads; 0 = all cores, at most " + std::to_string(kMaxThreads))
+      ->check(CLI::Range(0, kMaxThreads))
       ->capture_default_str();
 }
 

@@ -34,7 +34,12 @@ void ensureDirectory(const std::string& dir);
 /// Adds --quiet (silences progress bars) to `command`.
 void addQuietOption(CLI::App& command, bool& quiet);
 
-/// Adds --threads (0 = all cores) to `command`.
+/// Largest thread count accepted from --threads or a batch spec's "threads":
+/// far above the cores of any machine this runs on, low enough that the
+/// per-worker state of a run cannot exhaust memory.
+constexpr int kMaxThreads = 1024;
+
+/// Adds --threads (0 = all cores, at most kMaxThreads) to `command`.
 void addThreadsOption(CLI::App& command, int& threads);
 
 /// Limits TBB's parallelism to `threads` (0 = no limit) while alive.

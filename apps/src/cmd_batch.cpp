@@ -296,7 +296,7 @@ void registerBatch(CLI::App& root) {
   cmd->add_option("SPEC", args->spec, "batch spec (.json)")->required();
   cmd->add_option("--threads", args->threads,
                   "job workers and TBB threads; 0 = all cores; default: the spec's \"threads\"")
-      ->check(CLI::Range(0, 1 << 16));
+      ->check(CLI::Range(0, kMaxThreads));
   addQuietOption(*cmd, args->quiet);
   cmd->callback([args] { runBatch(*args); });
 }

@@ -148,5 +148,32 @@ TEST_F(Reliability, OutputThatIsNotARegularFileIsRefusedWithTheReason) {
   EXPECT_TRUE(fs::is_symlink(dir_ / "link.tbm"));
 }
 
+// Item 5: --threads 1000000000 (or "threads" in a batch spec) ended in
+// std::bad_alloc or gigabytes of thread state.
+TEST_F(Reliability, ThreadCountsAboveTheMaximumAreRefused) {
+  const std::string maximum = std::to_string(cli::kMaxThreads);
+  const std::vector<std::string> commands[] = {
+      {"prepare", file("bar_rest.obj"), file("bar_bend.obj"), "-o", file("x.tbm")},
+      {"blend", file("x.tbm"), "-w", "0", "-o", file("x.vtu")},
+      {"variations", file("x.tbm"), "-o", file("out")}};
+  for (std::vector<std::string> args : commands) {
+    SCOPED_TRACE(args[0]);
+    args.insert(args.end(), {"--threads", "1000000000"});
+    const RunResult r = tetblend(args, dir_);
+    expectOneLineError(r);
+    EXPECT_NE(r.err.find("--threads"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find(maximum), std::string::npos) << r.err;
+  }
+  for (const char* threads : {"1000000000", "-3", "1.5"}) {
+    SCOPED_TRACE(threads);
+    std::ofstream(dir_ / "spec.json") << R"({"model": "bar.tbm", "threads": )" << threads
+                                      << R"(, "jobs": [{"name": "a", "weights": [0, 0]}]})";
+    const RunResult r = tetblend({"batch", file("spec.json")}, dir_);
+    expectOneLineError(r);
+    EXPECT_NE(r.err.find(file("spec.json") + ": \"threads\" is " + threads), std::string::npos)
+        << r.err;
+  }
+}
+
 }  // namespace
 }  // namespace tetblend::apps_test
