@@ -5,6 +5,7 @@
 // Errors in binary data name the byte offset instead of a line.
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <string>
@@ -331,6 +332,15 @@ SurfaceMesh readPly(const std::string& path) {
         }
         const double corners =
             source.value(p.countType, [&] { return "list length of " + element(); });
+        // NaN, fractions and 1e30 (float count types) are refused before the
+        // conversion to int; a large whole count fails where the data ends.
+        constexpr double kMaxListLength = 2147483647.0;  // the int loop counter's range
+        if (!(corners <= kMaxListLength) || corners != std::floor(corners)) {
+          std::string length;
+          appendDouble(length, corners);
+          throw InputError(path + ":" + where() + ": list length " + length + " of " + element() +
+                           " is not a whole number of entries: fix the file");
+        }
         const bool indices = isFace && isIndexList(p);
         if (indices && corners != 3) {
           throw InputError(

@@ -322,6 +322,28 @@ TEST(SurfaceIo, HeaderCountsBeyondTheDataEndInOneErrorNamingTheFile) {
   }
 }
 
+// Issue 11 (no crash on any input): a list length read as NaN, a fraction or
+// 1e30 (a float count type) was converted to int (undefined behaviour, an
+// abort under UBSan) and the row misread.
+TEST(SurfaceIo, PlyListLengthThatIsNotACountIsRefused) {
+  TempDir dir;
+  for (const float length : {std::nanf(""), 2.5f, 1e30f}) {
+    SCOPED_TRACE(length);
+    io_test::ByteBuilder b(true);
+    b.text(
+        "ply\nformat binary_little_endian 1.0\nelement vertex 1\nproperty float x\nproperty "
+        "float y\nproperty float z\nproperty list float int extra\nend_header\n");
+    b.put(0.0f).put(0.0f).put(0.0f).put(length).put(std::int32_t{1}).put(std::int32_t{2});
+    writeText(dir.file("list.ply"), b.bytes());
+    const std::string message = messageOf(dir.file("list.ply"));
+    EXPECT_NE(message.find("list.ply: byte offset 145: list length "), std::string::npos)
+        << message;
+    EXPECT_NE(message.find(" of vertex 0 (0-based) is not a whole number of entries"),
+              std::string::npos)
+        << message;
+  }
+}
+
 // Issue 11, item 3: tokens quoted in errors went to the terminal verbatim,
 // control bytes and megabytes included.
 TEST(SurfaceIo, QuotedTokensAreEscapedAndShortened) {
