@@ -4,6 +4,7 @@
 #include <fstream>
 #include <set>
 
+#include "cli_common.h"
 #include "tetblend/core/error.h"
 
 namespace tetblend::cli {
@@ -49,7 +50,13 @@ BatchSpec readBatchSpec(const std::string& path) {
     spec.consistency = j.value("consistency", std::string("on"));
     spec.nonlinear = j.value("nonlinear", false);
     spec.surfaceFormats = j.value("surface_formats", std::vector<std::string>{});
-    spec.threads = j.value("threads", 0);
+    const json threads = j.value("threads", json(0));
+    if (!threads.is_number_integer() || threads.get<double>() < 0 ||
+        threads.get<double>() > kMaxThreads) {
+      throw InputError(path + ": \"threads\" is " + threads.dump() + ": give a whole number 0.." +
+                       std::to_string(kMaxThreads) + " (0 = all cores)");
+    }
+    spec.threads = threads.get<int>();
     const std::string method = j.value("method", std::string("kaji"));
     if (!j.contains("jobs") || !j["jobs"].is_array() || j["jobs"].empty()) {
       throw InputError(path + ": needs a non-empty \"jobs\" array");

@@ -7,7 +7,7 @@
 //     "consistency": "on",           rotation consistency, on|off (default on)
 //     "nonlinear": false,            nonlinear stitch (default false)
 //     "surface_formats": ["obj"],    extra surface files (default none)
-//     "threads": 0,                  job workers, 0 = all cores (default 0)
+//     "threads": 0,                  job workers, 0 = all cores, at most 1024 (default 0)
 //     "jobs": [ {"name": "half", "weights": [0.5, 0], "method": "dq"}, ... ]
 //   }
 // A job's "name" (letters, digits, '-', '_', '.'; unique) names its output

@@ -18,12 +18,21 @@ namespace fs = std::filesystem;
 
 void blendSeries(const ModelData& model, const BlendSettings& settings,
                  const std::vector<SeriesItem>& items, const std::string& dir,
-                 const std::string& collection, bool quiet) {
+                 const std::string& collection, const std::vector<std::string>& inputs,
+                 bool quiet) {
   if (items.empty()) throw InputError("nothing to blend: the series is empty");
   const BlendMethod method = parseMethod(settings.method);
   const std::vector<std::string> formats = parseSurfaceFormats(settings.surfaceFormats);
   for (const SeriesItem& item : items)
     requireWeightCount(item.weights, model.examples.size(), "weights of " + item.name);
+  std::vector<std::string> outputs = {(fs::path(dir) / (collection + ".pvd")).string(),
+                                      (fs::path(dir) / "weights.csv").string()};
+  for (const SeriesItem& item : items) {
+    for (const std::string& f :
+         blendOutputFiles((fs::path(dir) / (item.name + ".vtu")).string(), formats))
+      outputs.push_back(f);
+  }
+  checkOutputs(outputs, inputs);
   ensureDirectory(dir);
   const ShapeBlender blender = makeBlender(
       model, {method}, parseOnOff(settings.consistency, "--consistency"), settings.nonlinear);

@@ -20,9 +20,11 @@ struct SeriesItem {
 /// Blends every item with `settings` (method, consistency, nonlinear) on a
 /// blender built once, writes <dir>/<name>.vtu and .vtp (+ surface formats)
 /// per item, <dir>/<collection>.pvd of all of them and <dir>/weights.csv
-/// (name, time, weights). Shows a progress bar unless `quiet`.
+/// (name, time, weights). Shows a progress bar unless `quiet`. Refuses,
+/// before blending, outputs that are one of `inputs` or not regular files
+/// (checkOutputs).
 void blendSeries(const ModelData& model, const BlendSettings& settings,
                  const std::vector<SeriesItem>& items, const std::string& dir,
-                 const std::string& collection, bool quiet);
+                 const std::string& collection, const std::vector<std::string>& inputs, bool quiet);
 
 }  // namespace tetblend::cli

@@ -11,6 +11,7 @@
 #include <thread>
 
 #include "tetblend/core/error.h"
+#include "tetblend/meshing/atomic_file.h"
 
 namespace tetblend::cli {
 
@@ -93,8 +94,10 @@ void addQuietOption(CLI::App& command, bool& quiet) {
 }
 
 void addThreadsOption(CLI::App& command, int& threads) {
-  command.add_option("--threads", threads, "worker threads; 0 = all cores")
-      ->check(CLI::NonNegativeNumber)
+  command
+      .add_option("--threads", threads,
+                  "worker threads; 0 = all cores, at most " + std::to_string(kMaxThreads))
+      ->check(CLI::Range(0, kMaxThreads))
       ->capture_default_str();
 }
 
@@ -110,6 +113,37 @@ ThreadLimit::~ThreadLimit() = default;
 int resolveThreads(int threads) {
   if (threads > 0) return threads;
   return std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+}
+
+void checkOutputs(const std::vector<std::string>& outputs, const std::vector<std::string>& inputs) {
+  for (const std::string& output : outputs) {
+    const std::string reason = nonRegularOutputReason(output);
+    if (!reason.empty()) throw InputError(output + ": " + reason + "; choose another output name");
+    for (const std::string& input : inputs) {
+      std::error_code ec;
+      if (fs::equivalent(output, input, ec) && !ec) {
+        throw InputError(output + ": is the same file as the input " + input +
+                         "; writing it would destroy the input: choose another output name");
+      }
+    }
+  }
+}
+
+std::string outOfMemoryMessage(const std::vector<std::string>& args) {
+  std::string files;
+  for (std::size_t i = 1; i < args.size(); ++i) {
+    if (args[i] == "-o" || args[i] == "--output") {
+      ++i;
+      continue;
+    }
+    std::error_code ec;
+    if (args[i].rfind("-", 0) != 0 && fs::is_regular_file(args[i], ec)) {
+      files += (files.empty() ? "" : ", ") + args[i];
+    }
+  }
+  const std::string command = args.empty() ? "tetblend" : "'tetblend " + args.front() + "'";
+  return "out of memory in " + command + (files.empty() ? "" : " on " + files) +
+         ": an input is damaged (a wrong count) or too large for this machine";
 }
 
 std::string formatNumber(double value) {

@@ -34,7 +34,12 @@ void ensureDirectory(const std::string& dir);
 /// Adds --quiet (silences progress bars) to `command`.
 void addQuietOption(CLI::App& command, bool& quiet);
 
-/// Adds --threads (0 = all cores) to `command`.
+/// Largest thread count accepted from --threads or a batch spec's "threads":
+/// far above the cores of any machine this runs on, low enough that the
+/// per-worker state of a run cannot exhaust memory.
+constexpr int kMaxThreads = 1024;
+
+/// Adds --threads (0 = all cores, at most kMaxThreads) to `command`.
 void addThreadsOption(CLI::App& command, int& threads);
 
 /// Limits TBB's parallelism to `threads` (0 = no limit) while alive.
@@ -51,6 +56,17 @@ class ThreadLimit {
 
 /// Number of worker threads to use for `threads` (0 = hardware concurrency).
 int resolveThreads(int threads);
+
+/// Refuses, before any work, to write `outputs` that would lose data: an
+/// output that is the same file (device and inode) as one of `inputs`, or
+/// that exists and is not a regular file (a symbolic link, a directory, a
+/// FIFO, a socket or a device). InputError naming the output (and the input).
+void checkOutputs(const std::vector<std::string>& outputs, const std::vector<std::string>& inputs);
+
+/// The error line for a std::bad_alloc that escaped a subcommand; `args` is
+/// the command line without the program name. Names the subcommand and the
+/// arguments that are existing files other than -o/--output.
+std::string outOfMemoryMessage(const std::vector<std::string>& args);
 
 /// Prints "tetblend: warning: <line>" on stderr (always, --quiet or not).
 void printWarning(const std::string& line);

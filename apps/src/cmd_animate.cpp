@@ -37,7 +37,7 @@ void runAnimate(const AnimateArgs& a) {
     const double t = a.frames == 1 ? 0.0 : a.duration * f / (a.frames - 1);
     items.push_back({name, frames[static_cast<std::size_t>(f)], t});
   }
-  blendSeries(model, a.blend, items, a.output, "animation", a.quiet);
+  blendSeries(model, a.blend, items, a.output, "animation", {a.model}, a.quiet);
 }
 
 }  // namespace

@@ -155,6 +155,15 @@ void runBatch(const BatchArgs& a) {
   const BatchSpec spec = readBatchSpec(a.spec);
   const std::vector<std::string> formats = parseSurfaceFormats(spec.surfaceFormats);
   const bool consistency = parseOnOff(spec.consistency, a.spec + ": \"consistency\"");
+  std::vector<std::string> outputs;
+  for (const char* name : {"summary.json", "summary.csv", "batch.pvd"})
+    outputs.push_back((fs::path(spec.outputDir) / name).string());
+  for (const BatchJob& job : spec.jobs) {
+    for (const std::string& f :
+         blendOutputFiles((fs::path(spec.outputDir) / (job.name + ".vtu")).string(), formats))
+      outputs.push_back(f);
+  }
+  checkOutputs(outputs, {a.spec, spec.modelPath});
   const ModelData model = readModelFile(spec.modelPath);
   const std::uint64_t modelHash = fileHash(spec.modelPath);
   ensureDirectory(spec.outputDir);
@@ -287,7 +296,7 @@ void registerBatch(CLI::App& root) {
   cmd->add_option("SPEC", args->spec, "batch spec (.json)")->required();
   cmd->add_option("--threads", args->threads,
                   "job workers and TBB threads; 0 = all cores; default: the spec's \"threads\"")
-      ->check(CLI::Range(0, 1 << 16));
+      ->check(CLI::Range(0, kMaxThreads));
   addQuietOption(*cmd, args->quiet);
   cmd->callback([args] { runBatch(*args); });
 }

@@ -38,6 +38,9 @@ void runBlend(const BlendArgs& a) {
   const std::vector<double> weights = parseWeights(a.weights, "--weights");
   const BlendMethod method = parseMethod(a.blend.method);
   const std::vector<std::string> formats = parseSurfaceFormats(a.blend.surfaceFormats);
+  std::vector<std::string> inputs = a.examples;
+  inputs.push_back(fromModel ? a.model : a.rest);
+  checkOutputs(blendOutputFiles(a.output, formats), inputs);
   const ThreadLimit limit(a.prepare.threads);
 
   PrepareMessages messages;

@@ -28,6 +28,13 @@ bool isTetFormat(const std::string& path) {
   return e == ".vtu" || e == ".node" || e == ".ele" || e == ".mesh";
 }
 
+// The files behind a mesh path: a TetGen mesh is its .node and .ele pair.
+std::vector<std::string> tetGenPair(const std::string& path) {
+  const std::string e = extensionOf(path);
+  if (e != ".node" && e != ".ele") return {path};
+  return {withExtension(path, ".node"), withExtension(path, ".ele")};
+}
+
 NamedArray displacement(const Vertices& after, const Vertices& before) {
   NamedArray a{"displacement", 3, {}};
   for (Eigen::Index i = 0; i < after.rows(); ++i)
@@ -43,6 +50,11 @@ void runDeform(const DeformArgs& a) {
         "-o " + a.output + ": a " + (tets ? "tet mesh" : "surface") + " input needs a " +
         (tets ? "tet mesh (.vtu/.node/.mesh)" : "surface (.obj/.off/.ply/.vtp)") + " output");
   }
+  checkOutputs(tetGenPair(a.output), [&] {
+    std::vector<std::string> inputs = tetGenPair(a.mesh);
+    inputs.push_back(a.handles);
+    return inputs;
+  }());
   const HandleSpec spec = readHandleSpec(a.handles);
   TetMesh tetMesh;
   SurfaceMesh surface;

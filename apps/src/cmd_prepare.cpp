@@ -20,6 +20,9 @@ struct PrepareArgs {
 };
 
 void runPrepare(const PrepareArgs& a) {
+  std::vector<std::string> inputs = a.examples;
+  inputs.push_back(a.rest);
+  checkOutputs({a.output}, inputs);
   const ThreadLimit limit(a.settings.threads);
   PrepareMessages messages;
   messages.warning = printWarning;

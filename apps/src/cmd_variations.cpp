@@ -77,7 +77,7 @@ void runVariations(const VariationsArgs& a) {
       items.push_back({numbered("variation_", i), weights[static_cast<std::size_t>(i)],
                        static_cast<double>(i)});
   }
-  blendSeries(model, a.blend, items, a.output, "variations", a.quiet);
+  blendSeries(model, a.blend, items, a.output, "variations", {a.model}, a.quiet);
 }
 
 }  // namespace

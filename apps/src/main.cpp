@@ -6,16 +6,33 @@
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <exception>
+#include <new>
 #include <string>
+#include <vector>
 
+#include "cli_common.h"
 #include "commands.h"
 
 namespace {
 
-std::string oneLine(std::string message) {
-  for (char& c : message)
-    if (c == '\n' || c == '\r') c = ' ';
-  return message;
+// Line breaks become spaces and other control bytes \xNN, so that a message
+// quoting a file name or a value stays one harmless line on the terminal.
+std::string oneLine(const std::string& message) {
+  static const char kHex[] = "0123456789abcdef";
+  std::string line;
+  for (const char c : message) {
+    const auto byte = static_cast<unsigned char>(c);
+    if (c == '\n' || c == '\r') {
+      line += ' ';
+    } else if (byte < 0x20 || byte == 0x7f) {
+      line += "\\x";
+      line += kHex[byte >> 4];
+      line += kHex[byte & 0xf];
+    } else {
+      line += c;
+    }
+  }
+  return line;
 }
 
 int fail(const std::string& message, int code) {
@@ -45,6 +62,9 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     if (e.get_exit_code() == 0) return app.exit(e);  // --help, --version
     return fail(std::string(e.what()) + " (see 'tetblend --help')", 2);
+  } catch (const std::bad_alloc&) {
+    return fail(tetblend::cli::outOfMemoryMessage(std::vector<std::string>(argv + 1, argv + argc)),
+                1);
   } catch (const std::exception& e) {
     return fail(e.what(), 1);
   }

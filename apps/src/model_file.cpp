@@ -73,6 +73,15 @@ class ByteReader {
     return s;
   }
   bool atEnd() const { return pos_ == size_; }
+  // Refuses `n` items of `bytesEach` bytes before anything is allocated for
+  // them, when the rest of the payload cannot hold them.
+  void requireRoom(std::uint64_t n, std::uint64_t bytesEach, const char* what) const {
+    if (bytesEach > 0 && n > (size_ - pos_) / bytesEach) {
+      throw InputError(path_ + ": damaged model file (" + what + " " + std::to_string(n) +
+                       " needs more than the " + std::to_string(size_ - pos_) +
+                       " bytes left); re-run 'tetblend prepare'");
+    }
+  }
 
  private:
   void need(std::uint64_t n) const {
@@ -136,13 +145,19 @@ ModelData decodePayload(const unsigned char* data, std::size_t size, const std::
   const std::uint64_t ne = r.count("example count");
   ModelData m;
   m.surfaceVertexCount = static_cast<int>(ns);
+  constexpr std::uint64_t kVertexBytes = 3 * 8, kTetBytes = 4 * 4, kTriangleBytes = 3 * 4;
+  r.requireRoom(nv, kVertexBytes, "vertex count");
   m.rest.vertices = readVertices(r, nv);
+  r.requireRoom(nt, kTetBytes, "tet count");
   m.rest.tets.resize(static_cast<Eigen::Index>(nt), 4);
   for (Eigen::Index i = 0; i < m.rest.tets.rows(); ++i)
     for (int c = 0; c < 4; ++c) m.rest.tets(i, c) = r.i32();
+  r.requireRoom(nf, kTriangleBytes, "triangle count");
   m.surfaceTriangles.resize(static_cast<Eigen::Index>(nf), 3);
   for (Eigen::Index i = 0; i < m.surfaceTriangles.rows(); ++i)
     for (int c = 0; c < 3; ++c) m.surfaceTriangles(i, c) = r.i32();
+  // Each example holds its vertices and, after them, its source name's length.
+  r.requireRoom(ne, nv * kVertexBytes + 8, "example count");
   for (std::uint64_t k = 0; k < ne; ++k) m.examples.push_back(readVertices(r, nv));
   m.restSource = r.text();
   for (std::uint64_t k = 0; k < ne; ++k) m.exampleSources.push_back(r.text());
@@ -152,6 +167,7 @@ ModelData decodePayload(const unsigned char* data, std::size_t size, const std::
       throw InputError(path + ": damaged model file (" + std::to_string(nx) + " excluded tets of " +
                        std::to_string(nt) + "); re-run 'tetblend prepare'");
     }
+    r.requireRoom(nx, 4, "excluded tet count");
     for (std::uint64_t i = 0; i < nx; ++i) m.excludedTets.push_back(r.i32());
   }
   if (!r.atEnd()) {

@@ -59,11 +59,14 @@ TetMesh readMedit(const std::string& path) {
       const std::string_view d = nextToken("the dimension");
       if (parseInteger(d, path, tokens.lineNumber(), "dimension") != 3) {
         throwAtLine(path, tokens.lineNumber(),
-                    "Dimension " + std::string(d) + ": only 3D meshes are supported");
+                    "Dimension " + printableToken(d) + ": only 3D meshes are supported");
       }
     } else if (keyword == "Vertices") {
       const int count = nextCount("the vertex count");
-      mesh.vertices.resize(count, 3);
+      // Each vertex has 4 values ("x y z ref") of at least one byte; the whole
+      // file bounds what is left of it.
+      constexpr std::size_t kMinVertexBytes = 4;
+      mesh.vertices.resize(rowsToAllocate(count, kMinVertexBytes, text.size()), 3);
       for (int v = 0; v < count; ++v) {
         Eigen::RowVector3d p;
         for (int c = 0; c < 3; ++c) {
@@ -72,6 +75,7 @@ TetMesh readMedit(const std::string& path) {
                              [v] { return "coordinate of vertex " + std::to_string(v); });
         }
         checkFiniteVertex(p, path, std::to_string(tokens.lineNumber()), v);
+        growRows(mesh.vertices, v, count);
         mesh.vertices.row(v) = p;
         nextToken([v] { return "the reference of vertex " + std::to_string(v); });
       }
@@ -79,8 +83,10 @@ TetMesh readMedit(const std::string& path) {
     } else if (keyword == "Tetrahedra") {
       if (!haveVertices) throwAtLine(path, line, "Tetrahedra before Vertices: fix the file");
       const int count = nextCount("the tet count");
-      mesh.tets.resize(count, 4);
+      constexpr std::size_t kMinTetBytes = 5;  // "a b c d ref"
+      mesh.tets.resize(rowsToAllocate(count, kMinTetBytes, text.size()), 4);
       for (int t = 0; t < count; ++t) {
+        growRows(mesh.tets, t, count);
         const auto element = [t] { return "tet " + std::to_string(t) + " (0-based)"; };
         for (int c = 0; c < 4; ++c) {
           const long long index = parseInteger(nextToken(element), path, tokens.lineNumber(),
@@ -92,14 +98,14 @@ TetMesh readMedit(const std::string& path) {
       }
     } else if (keyword == "Hexahedra" || keyword == "Prisms" || keyword == "Pyramids") {
       throwAtLine(path, line,
-                  "section '" + std::string(keyword) +
-                      "': only tetrahedra are supported; convert the cells to tets");
+                  "section " + quoteToken(keyword) +
+                      ": only tetrahedra are supported; convert the cells to tets");
     } else {
       const int size = skippedEntrySize(keyword);
       if (size < 0) {
         throwAtLine(path, line,
-                    "unknown keyword '" + std::string(keyword) +
-                        "': not an ascii Medit .mesh file tetblend can read");
+                    "unknown keyword " + quoteToken(keyword) +
+                        ": not an ascii Medit .mesh file tetblend can read");
       }
       const int count = nextCount("the " + std::string(keyword) + " count");
       for (long long i = 0; i < static_cast<long long>(count) * size; ++i) {

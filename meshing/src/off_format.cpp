@@ -3,6 +3,7 @@
 // values such as colours or normals are ignored) and #F face lines
 // "k i0 .. ik-1 [colour]" with 0-based indices. Only k == 3 is accepted.
 
+#include <algorithm>
 #include <string>
 
 #include "formats.h"
@@ -19,8 +20,8 @@ SurfaceMesh readOff(const std::string& path) {
   if (!isOff || keyword.find('4') != std::string_view::npos ||
       (keyword.size() > 3 && keyword[keyword.size() - 4] == 'n')) {
     throwAtLine(path, lines.lineNumber(),
-                "expected the header 'OFF' (3D), found '" + std::string(keyword) +
-                    "': only 3D OFF files are supported");
+                "expected the header 'OFF' (3D), found " + quoteToken(keyword) +
+                    ": only 3D OFF files are supported");
   }
   std::vector<std::string_view> counts(lines.tokens().begin() + 1, lines.tokens().end());
   std::size_t countLine = lines.lineNumber();
@@ -36,24 +37,31 @@ SurfaceMesh readOff(const std::string& path) {
   }
   const int vertexCount = parseCount(counts[0], path, countLine, "vertex count");
   const int faceCount = parseCount(counts[1], path, countLine, "face count");
+  // Allocations are bounded by the data: in text each value takes at least one
+  // byte, and a vertex line has 3 values, a face line 4 ("3 i j k").
+  constexpr std::size_t kMinVertexBytes = 3;
+  constexpr std::size_t kMinFaceBytes = 4;
+  const std::size_t available = text.size() - std::min(text.size(), lines.endOffset());
 
   SurfaceMesh mesh;
-  mesh.vertices.resize(vertexCount, 3);
+  mesh.vertices.resize(rowsToAllocate(vertexCount, kMinVertexBytes, available), 3);
   for (int v = 0; v < vertexCount; ++v) {
     if (!lines.next()) {
       throwAtLine(path, lines.lineNumber(),
                   "file ends after " + std::to_string(v) + " of " + std::to_string(vertexCount) +
                       " vertices: fix the header or the data");
     }
+    growRows(mesh.vertices, v, vertexCount);
     mesh.vertices.row(v) = parseVertex(lines.tokens(), 0, path, lines.lineNumber(), v);
   }
-  mesh.triangles.resize(faceCount, 3);
+  mesh.triangles.resize(rowsToAllocate(faceCount, kMinFaceBytes, available), 3);
   for (int f = 0; f < faceCount; ++f) {
     if (!lines.next()) {
       throwAtLine(path, lines.lineNumber(),
                   "file ends after " + std::to_string(f) + " of " + std::to_string(faceCount) +
                       " faces: fix the header or the data");
     }
+    growRows(mesh.triangles, f, faceCount);
     const auto& tokens = lines.tokens();
     const auto element = [f] { return "face " + std::to_string(f) + " (0-based)"; };
     const long long corners = parseInteger(tokens[0], path, lines.lineNumber(),

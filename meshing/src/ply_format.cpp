@@ -4,6 +4,8 @@
 // "vertex_index") whose lists all have 3 entries. Other elements are skipped.
 // Errors in binary data name the byte offset instead of a line.
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <string>
@@ -29,6 +31,7 @@ struct Element {
   std::string name;
   int count = 0;
   std::vector<Property> properties;
+  std::size_t line = 0;  ///< header line of the declaration
 };
 
 bool scalarFromName(std::string_view name, Scalar& type) {
@@ -157,14 +160,23 @@ std::vector<Element> parseHeader(const std::string& path, TextLines& lines, Enco
         encoding = Encoding::BinaryBig;
       } else {
         throwAtLine(path, line,
-                    "unknown PLY format '" + std::string(t[1]) +
-                        "': expected ascii, binary_little_endian or binary_big_endian");
+                    "unknown PLY format " + quoteToken(t[1]) +
+                        ": expected ascii, binary_little_endian or binary_big_endian");
       }
       haveFormat = true;
     } else if (t[0] == "element") {
       if (t.size() < 3)
         throwAtLine(path, line, "expected 'element <name> <count>': fix the header");
-      elements.push_back({std::string(t[1]), parseCount(t[2], path, line, "element count"), {}});
+      for (const Element& earlier : elements) {
+        if (earlier.name == t[1]) {
+          throwAtLine(path, line,
+                      "element " + quoteToken(t[1]) + " is declared again (first on line " +
+                          std::to_string(earlier.line) +
+                          "): each element may be declared once; fix the header");
+        }
+      }
+      elements.push_back(
+          {std::string(t[1]), parseCount(t[2], path, line, "element count"), {}, line});
     } else if (t[0] == "property") {
       if (elements.empty()) throwAtLine(path, line, "'property' before any 'element'");
       Property p;
@@ -181,7 +193,7 @@ std::vector<Element> parseHeader(const std::string& path, TextLines& lines, Enco
       p.name = std::string(t[expected - 1]);
       elements.back().properties.push_back(p);
     } else {
-      throwAtLine(path, line, "unknown header keyword '" + std::string(t[0]) + "': fix the header");
+      throwAtLine(path, line, "unknown header keyword " + quoteToken(t[0]) + ": fix the header");
     }
   }
   throwAtLine(path, lines.lineNumber(), "the header has no 'end_header' line: fix the header");
@@ -232,6 +244,41 @@ class ValueSource {
   std::size_t column_ = 0;
 };
 
+bool isIndexList(const Property& p) {
+  return p.isList && (p.name == "vertex_indices" || p.name == "vertex_index");
+}
+
+// Checks, before anything is allocated, that a vertex element with rows has
+// x, y and z and a face element with rows its index list.
+void checkElements(const std::string& path, const std::vector<Element>& elements) {
+  for (const Element& e : elements) {
+    if (e.count == 0) continue;
+    int axes = 0;
+    bool indices = false;
+    for (const Property& p : e.properties) {
+      if (!p.isList) axes |= p.name == "x" ? 1 : p.name == "y" ? 2 : p.name == "z" ? 4 : 0;
+      indices = indices || isIndexList(p);
+    }
+    if (e.name == "vertex" && axes != 7) {
+      throw InputError(path + ": the vertex element lacks x, y or z properties");
+    }
+    if (e.name == "face" && !indices) {
+      throw InputError(path + ": the face element has no 'vertex_indices' list property");
+    }
+  }
+}
+
+// The fewest bytes one row of `e` takes: in binary its fixed-size properties
+// plus the count of each list, in ascii one byte per property (at least one:
+// a row is a line with a token).
+std::size_t minimumRowBytes(const Element& e, Encoding encoding) {
+  std::size_t bytes = 0;
+  for (const Property& p : e.properties) {
+    bytes += encoding == Encoding::Ascii ? 1 : scalarSize(p.isList ? p.countType : p.type);
+  }
+  return encoding == Encoding::Ascii ? std::max<std::size_t>(bytes, 1) : bytes;
+}
+
 }  // namespace
 
 SurfaceMesh readPly(const std::string& path) {
@@ -244,41 +291,57 @@ SurfaceMesh readPly(const std::string& path) {
     if (e.name == "vertex") vertexCount = e.count;
   }
   if (vertexCount < 0) throw InputError(path + ": no 'vertex' element in the header");
+  checkElements(path, elements);
+  // Rows are allocated for what the data after the header can hold, not for
+  // the header's counts (which may be wrong by billions).
+  const std::size_t available = text.size() - std::min(text.size(), lines.endOffset());
 
   SurfaceMesh mesh;
-  mesh.vertices.setZero(vertexCount, 3);
+  mesh.vertices.resize(0, 3);
   mesh.triangles.resize(0, 3);
   ValueSource source(path, text, lines, encoding);
   for (const Element& e : elements) {
     const bool isVertex = e.name == "vertex";
     const bool isFace = e.name == "face";
-    if (isFace) mesh.triangles.resize(e.count, 3);
-    int xyzFound = 0;
-    bool indicesFound = false;
+    const Eigen::Index rows = rowsToAllocate(e.count, minimumRowBytes(e, encoding), available);
+    if (isVertex) mesh.vertices.resize(rows, 3);
+    if (isFace) mesh.triangles.resize(rows, 3);
     std::vector<int> axes;
     for (const Property& p : e.properties) {
       axes.push_back(p.name == "x" ? 0 : p.name == "y" ? 1 : p.name == "z" ? 2 : -1);
     }
     for (int i = 0; i < e.count; ++i) {
-      const auto element = [&e, i] { return e.name + " " + std::to_string(i) + " (0-based)"; };
+      const auto element = [&e, i] {
+        return printableToken(e.name) + " " + std::to_string(i) + " (0-based)";
+      };
       source.beginRow(element);
+      if (isVertex) growRows(mesh.vertices, i, e.count);
+      if (isFace) growRows(mesh.triangles, i, e.count);
       const std::size_t rowPosition = source.position();
       const auto where = [&] { return source.where(rowPosition); };
       for (std::size_t k = 0; k < e.properties.size(); ++k) {
         const Property& p = e.properties[k];
         const int axis = axes[k];
         if (!p.isList) {
-          const double value =
-              source.value(p.type, [&] { return "property '" + p.name + "' of " + element(); });
+          const double value = source.value(
+              p.type, [&] { return "property " + quoteToken(p.name) + " of " + element(); });
           if (isVertex && axis >= 0) {
             mesh.vertices(i, axis) = value;
-            xyzFound |= 1 << axis;
           }
           continue;
         }
         const double corners =
             source.value(p.countType, [&] { return "list length of " + element(); });
-        const bool indices = isFace && (p.name == "vertex_indices" || p.name == "vertex_index");
+        // NaN, fractions and 1e30 (float count types) are refused before the
+        // conversion to int; a large whole count fails where the data ends.
+        constexpr double kMaxListLength = 2147483647.0;  // the int loop counter's range
+        if (!(corners <= kMaxListLength) || corners != std::floor(corners)) {
+          std::string length;
+          appendDouble(length, corners);
+          throw InputError(path + ":" + where() + ": list length " + length + " of " + element() +
+                           " is not a whole number of entries: fix the file");
+        }
+        const bool indices = isFace && isIndexList(p);
         if (indices && corners != 3) {
           throw InputError(
               path + ":" + where() + ": face " + std::to_string(i) + " (0-based) has " +
@@ -297,17 +360,8 @@ SurfaceMesh readPly(const std::string& path) {
           }
           mesh.triangles(i, c) = static_cast<int>(value);
         }
-        indicesFound = indicesFound || indices;
       }
-      if (isVertex) {
-        if (xyzFound != 7) {
-          throw InputError(path + ": the vertex element lacks x, y or z properties");
-        }
-        checkFiniteVertex(mesh.vertices.row(i), path, where(), i);
-      }
-      if (isFace && !indicesFound) {
-        throw InputError(path + ": the face element has no 'vertex_indices' list property");
-      }
+      if (isVertex) checkFiniteVertex(mesh.vertices.row(i), path, where(), i);
     }
   }
   return mesh;

@@ -123,7 +123,7 @@ SurfaceMesh readAsciiStl(const std::string& path, const std::string& text) {
       triangles.push_back(triangle);
       corner = -1;
     } else if (t[0] != "solid" && t[0] != "facet" && t[0] != "endfacet" && t[0] != "endsolid") {
-      throwAtLine(path, line, "unexpected keyword '" + std::string(t[0]) + "' in ascii STL");
+      throwAtLine(path, line, "unexpected keyword " + quoteToken(t[0]) + " in ascii STL");
     }
   }
   if (corner >= 0)

@@ -4,6 +4,7 @@
 // consecutive. .ele: "#tets 4 #attributes", then "index n0 n1 n2 n3 [attrs]".
 // Quadratic (10-node) tets are refused.
 
+#include <algorithm>
 #include <filesystem>
 #include <string>
 
@@ -25,11 +26,14 @@ Vertices readNode(const std::string& path, long long& base) {
   const auto& header = lines.tokens();
   const int count = parseCount(header[0], path, lines.lineNumber(), "point count");
   if (header.size() >= 2 && parseInteger(header[1], path, lines.lineNumber(), "dimension") != 3) {
-    throwAtLine(
-        path, lines.lineNumber(),
-        "dimension '" + std::string(header[1]) + "' is not 3: only 3D meshes are supported");
+    throwAtLine(path, lines.lineNumber(),
+                "dimension " + quoteToken(header[1]) + " is not 3: only 3D meshes are supported");
   }
-  Vertices vertices(count, 3);
+  // A point line has at least 4 values ("i x y z") of at least one byte each.
+  constexpr std::size_t kMinPointBytes = 4;
+  Vertices vertices(
+      rowsToAllocate(count, kMinPointBytes, text.size() - std::min(text.size(), lines.endOffset())),
+      3);
   base = 0;
   for (int v = 0; v < count; ++v) {
     if (!lines.next()) {
@@ -51,6 +55,7 @@ Vertices readNode(const std::string& path, long long& base) {
                   "point index " + std::to_string(index) + " where " + std::to_string(base + v) +
                       " was expected: indices must be consecutive");
     }
+    growRows(vertices, v, count);
     vertices.row(v) = parseVertex(t, 1, path, lines.lineNumber(), v);
   }
   return vertices;
@@ -71,13 +76,18 @@ Tets readEle(const std::string& path, long long base, int vertexCount) {
                       "supported (mesh without the -o2 switch)");
     }
   }
-  Tets tets(count, 4);
+  // A tet line has at least 5 values ("i a b c d") of at least one byte each.
+  constexpr std::size_t kMinTetBytes = 5;
+  Tets tets(
+      rowsToAllocate(count, kMinTetBytes, text.size() - std::min(text.size(), lines.endOffset())),
+      4);
   for (int e = 0; e < count; ++e) {
     if (!lines.next()) {
       throwAtLine(path, lines.lineNumber(),
                   "file ends after " + std::to_string(e) + " of " + std::to_string(count) +
                       " tets: the file is truncated");
     }
+    growRows(tets, e, count);
     const auto& t = lines.tokens();
     const auto element = [e] { return "tet " + std::to_string(e) + " (0-based)"; };
     if (t.size() < 5) {

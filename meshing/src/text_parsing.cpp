@@ -89,6 +89,29 @@ bool tryParseInteger(std::string_view token, long long& value) {
   return !token.empty() && ec == std::errc() && end == token.data() + token.size();
 }
 
+std::string printableToken(std::string_view token) {
+  // Long enough for any number or keyword of the formats read here, short
+  // enough that the error stays one readable line.
+  constexpr std::size_t kMaxQuotedBytes = 40;
+  const bool shortened = token.size() > kMaxQuotedBytes;
+  if (shortened) token = token.substr(0, kMaxQuotedBytes);
+  static const char kHex[] = "0123456789abcdef";
+  std::string out;
+  for (const char c : token) {
+    const auto byte = static_cast<unsigned char>(c);
+    if (byte >= 0x20 && byte < 0x7f && byte != '\\') {
+      out += c;
+    } else {
+      out += "\\x";
+      out += kHex[byte >> 4];
+      out += kHex[byte & 0xf];
+    }
+  }
+  return shortened ? out + "..." : out;
+}
+
+std::string quoteToken(std::string_view token) { return "'" + printableToken(token) + "'"; }
+
 void throwBadNumber(std::string_view token, const std::string& path, std::size_t line,
                     const std::string& what, bool integer) {
   double ignored = 0.0;
@@ -96,13 +119,12 @@ void throwBadNumber(std::string_view token, const std::string& path, std::size_t
   if (!digits.empty() && digits.front() == '+') digits.remove_prefix(1);
   const auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), ignored);
   if (!integer && ec == std::errc::result_out_of_range && end == digits.data() + digits.size()) {
-    throwAtLine(
-        path, line,
-        what + " '" + std::string(token) + "' is out of the double range: rescale the data");
+    throwAtLine(path, line,
+                what + " " + quoteToken(token) + " is out of the double range: rescale the data");
   }
   throwAtLine(path, line,
               std::string("expected ") + (integer ? "an integer" : "a number") + " for " + what +
-                  ", found '" + std::string(token) + "': fix the file");
+                  ", found " + quoteToken(token) + ": fix the file");
 }
 
 void throwIndexOutOfRange(long long value, long long base, int count, const std::string& path,
@@ -122,6 +144,13 @@ int parseCount(std::string_view token, const std::string& path, std::size_t line
                     " is not a valid count (0..2147483647): fix the header");
   }
   return static_cast<int>(value);
+}
+
+Eigen::Index rowsToAllocate(long long count, std::size_t bytesEach, std::size_t available) {
+  if (count <= 0) return 0;
+  if (bytesEach == 0) return static_cast<Eigen::Index>(count);
+  return static_cast<Eigen::Index>(
+      std::min<unsigned long long>(static_cast<unsigned long long>(count), available / bytesEach));
 }
 
 void checkFiniteVertex(const Eigen::RowVector3d& position, const std::string& path,

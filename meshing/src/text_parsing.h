@@ -4,6 +4,7 @@
 // from_chars, and raising InputError messages of the form
 // "<file>:<line>: <what is wrong>: <what to do>".
 
+#include <algorithm>
 #include <cstddef>
 #include <string>
 #include <string_view>
@@ -109,6 +110,33 @@ long long parseInteger(std::string_view token, const std::string& path, std::siz
 /// Parses a non-negative element count that fits in an int.
 int parseCount(std::string_view token, const std::string& path, std::size_t line,
                const std::string& what);
+
+/// Rows to allocate before reading `count` elements of at least `bytesEach`
+/// bytes each from the `available` bytes left after the header: `count`, or
+/// only as many as those bytes can hold. A wrong count (2^31 - 1 in a small
+/// file) then allocates nothing big, and the reader fails where the data ends,
+/// naming the file and line. Fill the rows through growRows.
+Eigen::Index rowsToAllocate(long long count, std::size_t bytesEach, std::size_t available);
+
+/// Makes row `row` of `matrix`, which is being filled with `count` rows,
+/// writable: the allocation doubles as rows are actually read, up to `count`,
+/// so memory follows the data even if a rowsToAllocate bound were too small.
+template <typename Matrix>
+void growRows(Matrix& matrix, Eigen::Index row, Eigen::Index count) {
+  if (row < matrix.rows()) return;
+  constexpr Eigen::Index kMinGrowth = 1024;  // rows; avoids many small reallocations
+  matrix.conservativeResize(
+      std::min(count, std::max(row + 1, std::max(2 * matrix.rows(), kMinGrowth))), Eigen::NoChange);
+}
+
+/// `token` for an error message: at most kMaxQuotedBytes of it (then "..."),
+/// bytes outside printable ASCII and backslashes written as \xNN, so that a
+/// binary or hostile file cannot put control sequences or megabytes on the
+/// terminal.
+std::string printableToken(std::string_view token);
+
+/// printableToken(token) in single quotes.
+std::string quoteToken(std::string_view token);
 
 /// Parses tokens[first..first+3) as the position of vertex `vertex`
 /// (0-based), refusing missing values and NaN/Inf.

@@ -90,6 +90,17 @@ TEST_F(CommandErrors, DamagedModelIsRefused) {
   }
 }
 
+// Issue 11, item 3: control bytes of a file name or value reached the
+// terminal verbatim; the error line escapes them.
+TEST(CommandErrorLine, ControlBytesAreEscaped) {
+  const fs::path dir = scratchDir();
+  const RunResult r = tetblend({"inspect", (dir / "a\x1b[2J\tb.obj").string()}, dir);
+  expectOneLineError(r);
+  EXPECT_NE(r.err.find("a\\x1b[2J\\x09b.obj"), std::string::npos) << r.err;
+  for (const char c : r.err.substr(0, r.err.size() - 1))
+    EXPECT_GE(static_cast<unsigned char>(c), 0x20) << r.err;
+}
+
 TEST(CommandHelp, EverySubcommandDocumentsItsOptions) {
   const fs::path dir = scratchDir();
   const struct {

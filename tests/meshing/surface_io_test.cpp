@@ -270,6 +270,128 @@ TEST(SurfaceIo, MalformedFilesThrowInputErrorNamingLineAndValue) {
   }
 }
 
+// Issue 11, item 1: the vertex matrix was sized from the last 'element vertex'
+// while the rows of every declaration were read into it (heap overflow).
+TEST(SurfaceIo, PlyElementDeclaredTwiceIsRefusedNamingBothLines) {
+  TempDir dir;
+  const std::string header =
+      "element vertex 40\nproperty double x\nproperty double y\nproperty double z\n"
+      "element vertex 3\nproperty double x\nproperty double y\nproperty double z\nend_header\n";
+  io_test::ByteBuilder ascii(true), binary(true);
+  ascii.text("ply\nformat ascii 1.0\n" + header);
+  binary.text("ply\nformat binary_little_endian 1.0\n" + header);
+  for (int row = 0; row < 43; ++row) {
+    ascii.text("1 2 3\n");
+    binary.put(1.0).put(2.0).put(3.0);
+  }
+  for (const auto* builder : {&ascii, &binary}) {
+    writeText(dir.file("twice.ply"), builder->bytes());
+    const std::string message = messageOf(dir.file("twice.ply"));
+    EXPECT_NE(message.find("twice.ply:7: element 'vertex' is declared again (first on line 3)"),
+              std::string::npos)
+        << message;
+  }
+}
+
+// Issue 11, item 2: a count near 2^31 in a header allocated gigabytes
+// (std::bad_alloc, no file named) before the data was read. Rows are now
+// allocated for what the data can hold, and the reader fails where it ends.
+TEST(SurfaceIo, HeaderCountsBeyondTheDataEndInOneErrorNamingTheFile) {
+  const std::vector<Malformed> cases = {
+      {"a.ply",
+       "ply\nformat ascii 1.0\nelement vertex 2147483647\nproperty double x\nproperty double "
+       "y\nproperty double z\nend_header\n0 0 0\n",
+       "a.ply:8: file ends before vertex 1 (0-based): the file is truncated"},
+      {"a.ply",
+       "ply\nformat binary_little_endian 1.0\nelement vertex 0\nproperty float x\nproperty float "
+       "y\nproperty float z\nelement face 2147483647\nproperty list uchar int vertex_indices\n"
+       "end_header\n\x03",
+       "a.ply: byte offset 179: file ends inside list entry of face 0 (0-based)"},
+      {"a.ply", "ply\nformat ascii 1.0\nelement vertex 2147483647\nproperty double y\nend_header\n",
+       "a.ply: the vertex element lacks x, y or z properties"},
+      {"a.off", "OFF\n2147483647 0 0\n0 0 0\n",
+       "a.off:3: file ends after 1 of 2147483647 vertices"},
+      {"a.off", "OFF 0 2147483000 0\n", "a.off:1: file ends after 0 of 2147483000 faces"},
+  };
+  TempDir dir;
+  for (const Malformed& c : cases) {
+    SCOPED_TRACE(c.content);
+    writeText(dir.file(c.file), c.content);
+    const std::string message = messageOf(dir.file(c.file));
+    EXPECT_NE(message.find(c.expected), std::string::npos) << message;
+  }
+}
+
+// Issue 11 (no crash on any input): a list length read as NaN, a fraction or
+// 1e30 (a float count type) was converted to int (undefined behaviour, an
+// abort under UBSan) and the row misread.
+TEST(SurfaceIo, PlyListLengthThatIsNotACountIsRefused) {
+  TempDir dir;
+  for (const float length : {std::nanf(""), 2.5f, 1e30f}) {
+    SCOPED_TRACE(length);
+    io_test::ByteBuilder b(true);
+    b.text(
+        "ply\nformat binary_little_endian 1.0\nelement vertex 1\nproperty float x\nproperty "
+        "float y\nproperty float z\nproperty list float int extra\nend_header\n");
+    b.put(0.0f).put(0.0f).put(0.0f).put(length).put(std::int32_t{1}).put(std::int32_t{2});
+    writeText(dir.file("list.ply"), b.bytes());
+    const std::string message = messageOf(dir.file("list.ply"));
+    EXPECT_NE(message.find("list.ply: byte offset 145: list length "), std::string::npos)
+        << message;
+    EXPECT_NE(message.find(" of vertex 0 (0-based) is not a whole number of entries"),
+              std::string::npos)
+        << message;
+  }
+}
+
+// Issue 11, item 3: tokens quoted in errors went to the terminal verbatim,
+// control bytes and megabytes included.
+TEST(SurfaceIo, QuotedTokensAreEscapedAndShortened) {
+  // Far longer than any quoted token may be; the message must stay a line.
+  constexpr std::size_t kHugeToken = 100000;
+  constexpr std::size_t kMaxMessage = 300;
+  TempDir dir;
+  const std::string hostile = "1\x1b[2J\x07" + std::string(kHugeToken, '9');
+  writeText(dir.file("evil.obj"), "v 0 0 " + hostile + "x\n");
+  writeText(dir.file("evil.off"), "\x1b]0;owned\x07OFX\n");
+  for (const char* name : {"evil.obj", "evil.off"}) {
+    SCOPED_TRACE(name);
+    const std::string message = messageOf(dir.file(name));
+    EXPECT_NE(message.find("\\x1b"), std::string::npos) << message;
+    EXPECT_LT(message.size(), kMaxMessage) << message;
+    for (const char c : message) EXPECT_GE(static_cast<unsigned char>(c), 0x20) << message;
+  }
+  EXPECT_NE(messageOf(dir.file("evil.obj")).find("found '1\\x1b[2J\\x07999"), std::string::npos);
+  EXPECT_NE(messageOf(dir.file("evil.obj")).find("99...'"), std::string::npos);
+}
+
+// Issue 11, item 4 (backstop under the command line's own check): the atomic
+// writer renamed over whatever the target was.
+TEST(SurfaceIo, WriterRefusesTargetsThatAreNotRegularFiles) {
+  TempDir dir;
+  writeText(dir.file("kept.obj"), "v 0 0 0\n");
+  io_test::fs::create_directory(dir.file("folder.obj"));
+  io_test::fs::create_symlink(dir.file("kept.obj"), dir.file("link.obj"));
+  const struct {
+    const char* name;
+    const char* reason;
+  } cases[] = {{"folder.obj", "is a directory"}, {"link.obj", "is a symbolic link"}};
+  for (const auto& c : cases) {
+    SCOPED_TRACE(c.name);
+    std::string message = "no InputError";
+    try {
+      writeSurface(dir.file(c.name), hardSurface());
+    } catch (const InputError& e) {
+      message = e.what();
+    }
+    EXPECT_NE(message.find(dir.file(c.name) + ": " + c.reason), std::string::npos) << message;
+  }
+  EXPECT_TRUE(io_test::fs::is_directory(dir.file("folder.obj")));
+  EXPECT_TRUE(io_test::fs::is_symlink(dir.file("link.obj")));
+  EXPECT_EQ(io_test::readText(dir.file("kept.obj")), "v 0 0 0\n");
+  EXPECT_EQ(dir.entryCount(), 3);
+}
+
 TEST(SurfaceIo, VtpWithPolygonsOrStripsIsRefused) {
   TempDir dir;
   auto points = vtkSmartPointer<vtkPoints>::New();

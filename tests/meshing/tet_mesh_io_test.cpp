@@ -167,6 +167,31 @@ TEST(TetMeshIo, MalformedFilesThrowInputErrorNamingLineAndValue) {
   }
 }
 
+// Issue 11, item 2: a count near 2^31 in a header allocated gigabytes
+// (std::bad_alloc, no file named) before the data was read. Rows are now
+// allocated for what the data can hold, and the reader fails where it ends.
+TEST(TetMeshIo, HeaderCountsBeyondTheDataEndInOneErrorNamingTheFile) {
+  const std::vector<Malformed> cases = {
+      {"a.node", "2147483647 3 0 0\n0 0 0 0\n", "a.node:2: file ends after 1 of 2147483647 points"},
+      {"a.ele", "2147483647 4 0\n0 0 1 2 3\n", "a.ele:2: file ends after 1 of 2147483647 tets"},
+      {"a.mesh", "Dimension 3\nVertices 2147483647\n0 0 0 0\n",
+       "a.mesh:3: file ends before vertex 1"},
+      {"a.mesh", "Dimension 3\nVertices 1\n0 0 0 0\nTetrahedra 2147483647\n1 1 1 1 0\n",
+       "a.mesh:5: file ends before tet 1 (0-based)"},
+  };
+  TempDir dir;
+  for (const Malformed& c : cases) {
+    SCOPED_TRACE(c.content);
+    writeText(dir.file(c.file), c.content);
+    if (std::string(c.file) == "a.node") writeText(dir.file("a.ele"), "1 4 0\n0 0 1 2 3\n");
+    if (std::string(c.file) == "a.ele") {
+      writeText(dir.file("a.node"), "4 3 0 0\n0 0 0 0\n1 1 0 0\n2 0 1 0\n3 0 0 1\n");
+    }
+    const std::string message = messageOf(dir.file(c.file));
+    EXPECT_NE(message.find(c.expected), std::string::npos) << message;
+  }
+}
+
 TEST(TetMeshIo, VtuWithNonTetCellsIsRefused) {
   TempDir dir;
   auto points = vtkSmartPointer<vtkPoints>::New();
