@@ -42,8 +42,16 @@ void blendSeries(const ModelData& model, const BlendSettings& settings,
   csv << "name,time";
   for (std::size_t k = 0; k < model.examples.size(); ++k) csv << ",w" << k + 1;
   csv << "\n";
+  std::size_t shapesWithInverted = 0;
+  int mostInverted = 0;
+  std::string worst;
   for (const SeriesItem& item : items) {
     const BlendedShape shape = blendShape(blender, model, item.weights, method);
+    if (shape.quality.invertedCount > 0) ++shapesWithInverted;
+    if (shape.quality.invertedCount > mostInverted) {
+      mostInverted = shape.quality.invertedCount;
+      worst = item.name;
+    }
     writeBlendResult((fs::path(dir) / (item.name + ".vtu")).string(), model, shape.vertices,
                      shape.cellData, formats);
     sets.push_back({item.time, item.name + ".vtu", 0});
@@ -59,6 +67,13 @@ void blendSeries(const ModelData& model, const BlendSettings& settings,
     out << csv.str();
     if (!out.flush()) throw InputError(csvPath + ": cannot write");
   });
+  progress.finish();
+  if (shapesWithInverted > 0) {
+    printWarning(dir + ": " + std::to_string(shapesWithInverted) + " of " +
+                 std::to_string(items.size()) + " shapes have inverted tets (most: " + worst +
+                 ", " + std::to_string(mostInverted) + " of " +
+                 std::to_string(model.rest.tets.rows()) + " tets; cell array 'inverted')");
+  }
 }
 
 }  // namespace tetblend::cli

@@ -20,7 +20,8 @@ struct SeriesItem {
 /// Blends every item with `settings` (method, consistency, nonlinear) on a
 /// blender built once, writes <dir>/<name>.vtu and .vtp (+ surface formats)
 /// per item, <dir>/<collection>.pvd of all of them and <dir>/weights.csv
-/// (name, time, weights). Shows a progress bar unless `quiet`. Refuses,
+/// (name, time, weights). Shows a progress bar unless `quiet`; ends with one
+/// warning line when some shapes have inverted tets. Refuses,
 /// before blending, outputs that are one of `inputs` or not regular files
 /// (checkOutputs).
 void blendSeries(const ModelData& model, const BlendSettings& settings,

@@ -3,6 +3,9 @@
 #include <cmath>
 #include <limits>
 
+#include "cli_common.h"
+#include "tetblend/core/error.h"
+
 namespace tetblend::cli {
 
 namespace {
@@ -35,7 +38,19 @@ std::vector<Eigen::Matrix3d> targetsOfAllTets(const ModelData& model,
 
 BlendedShape blendShape(const ShapeBlender& blender, const ModelData& model,
                         const std::vector<double>& weights, BlendMethod method) {
-  BlendResult result = blender.blend(weights, method);
+  std::string list;
+  for (double w : weights) list += (list.empty() ? "" : ",") + formatNumber(w);
+  BlendResult result;
+  try {
+    result = blender.blend(weights, method);
+  } catch (const DomainError& e) {
+    throw DomainError("weights " + list + ": " + e.what());
+  }
+  if (!result.vertices.allFinite()) {
+    throw InputError("weights " + list +
+                     ": the blend is not finite (weights this large overflow the blended maps); "
+                     "use weights of moderate size");
+  }
   const bool excludes = !model.excludedTets.empty();
   const TetQuality q = excludes ? tetQuality(model.rest, restTetData(model.rest), result.vertices,
                                              targetsOfAllTets(model, result.targets))

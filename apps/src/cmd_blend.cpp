@@ -56,6 +56,12 @@ void runBlend(const BlendArgs& a) {
   progress.advance();
   writeBlendResult(a.output, model, shape.vertices, shape.cellData, formats);
   progress.advance();
+  progress.finish();
+  if (shape.quality.invertedCount > 0) {
+    printWarning(a.output + ": " + std::to_string(shape.quality.invertedCount) + " of " +
+                 std::to_string(model.rest.tets.rows()) + " tets are inverted at weights " +
+                 a.weights + " (cell array 'inverted'; weights outside [0, 1] extrapolate)");
+  }
 }
 
 }  // namespace

@@ -92,6 +92,25 @@ TEST_F(BlendCommand, UnitWeightsGiveEachExampleForEveryMapMethod) {
   }
 }
 
+TEST_F(BlendCommand, InvertedTetsAreWarnedAboutAndOverflowIsAWeightsError) {
+  // Far extrapolation (the 5,-4) turns tets inside out: the blend is
+  // written, with one warning line counting them.
+  const RunResult far = tetblend(
+      {"blend", model_.string(), "-w", "5,-4", "-o", (dir_ / "far.vtu").string()}, dir_);
+  ASSERT_EQ(far.code, 0) << far.err;
+  EXPECT_EQ(far.err.rfind("tetblend: warning: ", 0), 0u) << far.err;
+  EXPECT_NE(far.err.find("tets are inverted at weights 5,-4"), std::string::npos) << far.err;
+  EXPECT_EQ(std::count(far.err.begin(), far.err.end(), '\n'), 1) << far.err;
+  // Weights of 1e300 overflow: refused as a weights problem, nothing written.
+  const std::vector<std::string> before = listDir(dir_);
+  const RunResult huge = tetblend(
+      {"blend", model_.string(), "-w", "1e300,0", "-o", (dir_ / "huge.vtu").string()}, dir_);
+  expectOneLineError(huge);
+  EXPECT_NE(huge.err.find("weights 1e+300,0: "), std::string::npos) << huge.err;
+  EXPECT_NE(huge.err.find("overflow"), std::string::npos) << huge.err;
+  EXPECT_EQ(listDir(dir_), before);
+}
+
 TEST_F(BlendCommand, StraightFromSurfacesMatchesTheModel) {
   const RunResult r =
       tetblend({"blend", "--rest", (dir_ / "bar_rest.obj").string(), "--example",
