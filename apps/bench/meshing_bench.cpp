@@ -162,7 +162,7 @@ void BM_PrepareCompatibleMeshes(benchmark::State& state) {
   double readMs = 0, validateMs = 0, tetgenMs = 0, embedMs = 0;
   long long tets = 0, refinedTets = 0, steiner = 0, surfaceFaces = 0, invertedLeft = 0,
             intersecting = 0, invertedIntersecting = 0;
-    invertedIntersecting = 0;
+  invertedIntersecting = 0;
   for (auto _ : state) {
     auto start = std::chrono::steady_clock::now();
     const SurfaceMesh rest = readSurface(files.rest);
@@ -193,7 +193,7 @@ void BM_PrepareCompatibleMeshes(benchmark::State& state) {
     intersecting = 0;
     invertedIntersecting = 0;
     for (std::size_t k = 0; k < built.examples.size(); ++k) {
-      if (built.selfIntersectingPairs[k] > 0) {
+      if (built.selfIntersections[k].pairCount > 0) {
         ++intersecting;
         invertedIntersecting += static_cast<long long>(built.examples[k].invertedTets.size());
       } else {

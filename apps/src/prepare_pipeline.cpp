@@ -9,7 +9,6 @@
 #include "tetblend/core/error.h"
 #include "tetblend/core/tet_geometry.h"
 #include "tetblend/meshing/example_aware_tets.h"
-#include "tetblend/meshing/self_intersection.h"
 #include "tetblend/meshing/surface_io.h"
 #include "tetblend/meshing/surface_validation.h"
 #include "tetblend/meshing/tetgen_mesher.h"
@@ -35,11 +34,13 @@ std::string threeDigits(double value) {
   return buffer;
 }
 
-// Why example `path`'s tets cannot be embedded, in words: its surface
-// intersects itself (how many face pairs, the first), or it does not.
-std::string surfaceDiagnosis(const SurfaceMesh& example) {
-  const SelfIntersections found = findSelfIntersections(example.vertices, example.triangles, 1);
-  if (found.pairCount == 0) return "its surface does not intersect itself but folds too tightly";
+// Why an example's tets cannot be embedded, in words: its surface intersects
+// itself (how many face pairs, the first), or the placement failed.
+std::string diagnosis(const SelfIntersections& found) {
+  if (found.pairCount == 0) {
+    return "its surface does not intersect itself, but the interior could not be placed "
+           "without inverting them (a finer rest mesh, --max-volume, may help)";
+  }
   return "its surface intersects itself at " + std::to_string(found.pairCount) + " face pair" +
          (found.pairCount > 1 ? "s" : "") + ", first faces " +
          std::to_string(found.pairs.front().first) + " and " +
@@ -141,11 +142,9 @@ ModelData prepareModel(const std::string& restPath, const std::vector<std::strin
                                " tets cannot be embedded (worst volume ratio " +
                                threeDigits(worstVolumeRatio(model.rest, placed)) + ", first tet " +
                                std::to_string(placed.invertedTets.front()) + "); " +
-                               surfaceDiagnosis(examples[k]);
+                               diagnosis(built.selfIntersections[k]);
       if (settings.strict) {
-        throw InputError(what +
-                         ": repair the pose, or leave out --strict to exclude those "
-                         "tets from the stitch");
+        throw InputError(what + ": leave out --strict to exclude those tets from the stitch");
       }
       say(messages.warning, what + ": they are left out of the stitch of every blend");
       model.excludedTets.insert(model.excludedTets.end(), placed.invertedTets.begin(),

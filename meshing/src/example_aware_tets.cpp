@@ -89,7 +89,7 @@ CompatibleTetMeshes buildCompatibleTetMeshes(const TetMesh& rest, int surfaceVer
   const BoundarySimplices boundary = boundarySimplices(rest);
   const Triangles triangles = boundarySurface(rest).triangles;
   for (const Vertices& example : exampleSurfaces) {
-    meshes.selfIntersectingPairs.push_back(findSelfIntersections(example, triangles, 0).pairCount);
+    meshes.selfIntersections.push_back(findSelfIntersections(example, triangles, 1));
   }
 
   // Stage 1: all-surface tets an example inverts (no placement can help).
@@ -116,7 +116,7 @@ CompatibleTetMeshes buildCompatibleTetMeshes(const TetMesh& rest, int surfaceVer
   for (std::size_t k = 0; k < exampleSurfaces.size(); ++k) {
     CompatibleTetResult placed = builder.place(exampleSurfaces[k]);
     if (options.placement.untangle && !placed.invertedTets.empty()) {
-      const bool clean = meshes.selfIntersectingPairs[k] == 0;
+      const bool clean = meshes.selfIntersections[k].pairCount == 0;
       CompatibleTetResult repaired =
           builder.repair(placed.vertices, clean ? options.placement.untangleMaxRings
                                                 : options.intersectingUntangleRings);
@@ -137,7 +137,7 @@ CompatibleTetMeshes buildCompatibleTetMeshes(const TetMesh& rest, int surfaceVer
   // best state is kept. Valid placements stay valid through every split.
   std::vector<std::size_t> order;
   for (std::size_t k = 0; k < exampleSurfaces.size(); ++k) {
-    if (meshes.selfIntersectingPairs[k] == 0 && !meshes.examples[k].invertedTets.empty()) {
+    if (meshes.selfIntersections[k].pairCount == 0 && !meshes.examples[k].invertedTets.empty()) {
       order.push_back(k);
     }
   }

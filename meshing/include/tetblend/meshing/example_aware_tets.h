@@ -37,6 +37,7 @@
 
 #include "tetblend/core/mesh_types.h"
 #include "tetblend/meshing/compatible_tets.h"
+#include "tetblend/meshing/self_intersection.h"
 
 namespace tetblend {
 
@@ -61,8 +62,9 @@ struct CompatibleTetMeshes {
   /// One per example, placed on `rest` (vertices #V by 3 and the tets that
   /// stay inverted, ascending).
   std::vector<CompatibleTetResult> examples;
-  /// Per example: intersecting face pairs of its surface (0 = clean).
-  std::vector<std::size_t> selfIntersectingPairs;
+  /// Per example: the self-intersections of its surface (pairCount 0 =
+  /// clean; the first pair listed).
+  std::vector<SelfIntersections> selfIntersections;
   int steinerPoints = 0;           ///< interior vertices added by refinement
   int rounds = 0;                  ///< refinement rounds performed (stages 1 and 3)
   int allSurfaceTetsInverted = 0;  ///< all-surface tets found inverted in stage 1
