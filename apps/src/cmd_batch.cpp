@@ -107,6 +107,15 @@ void writeText(const std::string& path, const std::string& text) {
   });
 }
 
+/// One CSV field per RFC 4180: in double quotes, inner quotes doubled, when it
+/// holds a comma, a quote, CR or LF; as is otherwise.
+std::string csvField(const std::string& text) {
+  if (text.find_first_of(",\"\r\n") == std::string::npos) return text;
+  std::string quoted = "\"";
+  for (const char c : text) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return quoted + "\"";
+}
+
 void writeSummaries(const BatchSpec& spec, const std::vector<std::string>& fingerprints,
                     const std::vector<JobOutcome>& outcomes) {
   json summary{{"spec", spec.specPath}, {"model", spec.modelPath}, {"jobs", json::array()}};
@@ -137,15 +146,13 @@ void writeSummaries(const BatchSpec& spec, const std::vector<std::string>& finge
     std::string weights;
     if (job.weights.is_array())
       for (const json& x : job.weights) weights += (weights.empty() ? "" : " ") + x.dump();
-    csv << job.name << "," << job.method << "," << (o.done ? "done" : "failed") << "," << weights;
+    csv << csvField(job.name) << "," << csvField(job.method) << ","
+        << (o.done ? "done" : "failed") << "," << csvField(weights);
     for (const auto& c : qualityColumns(QualitySummary{})) {
       csv << ",";
       if (o.done && quality.contains(c.first)) csv << formatNumber(quality[c.first].get<double>());
     }
-    std::string error = o.error;
-    for (char& ch : error)
-      if (ch == ',' || ch == '\n' || ch == '"') ch = ';';
-    csv << "," << formatNumber(o.seconds) << "," << error << "\n";
+    csv << "," << formatNumber(o.seconds) << "," << csvField(o.error) << "\n";
   }
   writeText((fs::path(spec.outputDir) / "summary.json").string(), summary.dump(2) + "\n");
   writeText((fs::path(spec.outputDir) / "summary.csv").string(), csv.str());

@@ -12,6 +12,48 @@ namespace {
 using nlohmann::json;
 constexpr double kInterpolationTolerance = 1e-7 * 4.1;  // as in blend_test.cpp
 
+/// Rows of RFC 4180 CSV text: fields split at commas outside double quotes, a
+/// quoted field's "" read as one quote, rows ended by LF or CRLF outside quotes.
+/// Independent of the writer in cmd_batch.cpp.
+std::vector<std::vector<std::string>> parseCsv(const std::string& text) {
+  std::vector<std::vector<std::string>> rows;
+  std::vector<std::string> row;
+  std::string field;
+  bool quoted = false;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const char c = text[i];
+    if (quoted) {
+      if (c == '"' && i + 1 < text.size() && text[i + 1] == '"') {
+        field += '"';
+        ++i;
+      } else if (c == '"') {
+        quoted = false;
+      } else {
+        field += c;
+      }
+    } else if (c == '"') {
+      quoted = true;
+    } else if (c == ',') {
+      row.push_back(field);
+      field.clear();
+    } else if (c == '\n' || (c == '\r' && i + 1 < text.size() && text[i + 1] == '\n')) {
+      if (c == '\r') ++i;
+      row.push_back(field);
+      field.clear();
+      rows.push_back(row);
+      row.clear();
+    } else {
+      field += c;
+    }
+  }
+  EXPECT_FALSE(quoted) << "unterminated quoted field";
+  if (!field.empty() || !row.empty()) {
+    row.push_back(field);
+    rows.push_back(row);
+  }
+  return rows;
+}
+
 class BatchCommand : public ::testing::Test {
  protected:
   void SetUp() override {
@@ -89,6 +131,23 @@ TEST_F(BatchCommand, SecondRunSkipsFinishedJobsAndRerunsEditedOnes) {
   ASSERT_EQ(tetblend({"batch", spec.string()}, dir_).code, 0);
   EXPECT_FALSE(summary()["jobs"][0]["skipped_this_run"].get<bool>());
   EXPECT_TRUE(fs::exists(dir_ / "out" / "a.vtp"));
+}
+
+TEST_F(BatchCommand, SummaryCsvQuotesCommasAndQuotes) {
+  const std::string method = "kaji, \"fast\"";  // an unknown method: its job fails
+  const fs::path spec = writeSpec(json::array(
+      {{{"name", "rest"}, {"weights", {0, 0}}},
+       {{"name", "odd"}, {"weights", {0, 1}}, {"method", method}}}));
+  expectOneLineError(tetblend({"batch", spec.string()}, dir_));
+  const auto rows = parseCsv(slurp(dir_ / "out" / "summary.csv"));
+  ASSERT_EQ(rows.size(), 3u);  // header + 2 jobs
+  for (const auto& row : rows) EXPECT_EQ(row.size(), rows[0].size());
+  EXPECT_EQ(rows[0][0], "name");
+  EXPECT_EQ(rows[0][1], "method");
+  EXPECT_EQ(rows[2][0], "odd");
+  EXPECT_EQ(rows[2][1], method);
+  EXPECT_EQ(rows[2][2], "failed");
+  EXPECT_EQ(rows[2].back(), summary()["jobs"][1]["error"].get<std::string>());
 }
 
 TEST_F(BatchCommand, BadSpecIsOneLineError) {
