@@ -7,13 +7,23 @@
 // weights, consistency, nonlinear and surface formats) and all its output
 // files still exist. Editing a job, or re-preparing the model, reruns it.
 //
+// One run per output directory: a run holds an exclusive flock on
+// <output_dir>/.tetblend-batch.lock (released by the kernel when the process
+// ends, even by kill -9); a second run on the same directory is refused.
+//
 // Concurrency: the blender's stitch keeps one workspace, so the blends
 // themselves take turns (each is parallel over tets inside); the quality
 // figures and the compressed output files of different jobs are made
 // concurrently by the job workers.
 
+#include <fcntl.h>
+#include <sys/file.h>
+#include <unistd.h>
+
 #include <atomic>
+#include <cerrno>
 #include <chrono>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -40,6 +50,38 @@ namespace {
 
 namespace fs = std::filesystem;
 using nlohmann::json;
+
+constexpr const char* kLockName = ".tetblend-batch.lock";
+
+/// Holds an exclusive, non-blocking flock on <dir>/.tetblend-batch.lock for
+/// its lifetime; InputError naming `dir` when another process holds it.
+class OutputDirLock {
+ public:
+  explicit OutputDirLock(const std::string& dir) {
+    const std::string path = (fs::path(dir) / kLockName).string();
+    fd_ = ::open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC | O_NOFOLLOW, 0644);
+    if (fd_ < 0) {
+      throw InputError(path + ": cannot open the lock file (" + std::strerror(errno) + ")");
+    }
+    if (::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
+      const int err = errno;
+      ::close(fd_);
+      if (err == EWOULDBLOCK) {
+        throw InputError(dir +
+                         ": another 'tetblend batch' is running on this output directory (it "
+                         "holds " +
+                         path + "); wait for it to end or choose another output_dir");
+      }
+      throw InputError(path + ": cannot lock (" + std::strerror(err) + ")");
+    }
+  }
+  ~OutputDirLock() { ::close(fd_); }
+  OutputDirLock(const OutputDirLock&) = delete;
+  OutputDirLock& operator=(const OutputDirLock&) = delete;
+
+ private:
+  int fd_ = -1;
+};
 
 struct BatchArgs {
   std::string spec;
@@ -146,8 +188,8 @@ void writeSummaries(const BatchSpec& spec, const std::vector<std::string>& finge
     std::string weights;
     if (job.weights.is_array())
       for (const json& x : job.weights) weights += (weights.empty() ? "" : " ") + x.dump();
-    csv << csvField(job.name) << "," << csvField(job.method) << ","
-        << (o.done ? "done" : "failed") << "," << csvField(weights);
+    csv << csvField(job.name) << "," << csvField(job.method) << "," << (o.done ? "done" : "failed")
+        << "," << csvField(weights);
     for (const auto& c : qualityColumns(QualitySummary{})) {
       csv << ",";
       if (o.done && quality.contains(c.first)) csv << formatNumber(quality[c.first].get<double>());
@@ -163,7 +205,7 @@ void runBatch(const BatchArgs& a) {
   const std::vector<std::string> formats = parseSurfaceFormats(spec.surfaceFormats);
   const bool consistency = parseOnOff(spec.consistency, a.spec + ": \"consistency\"");
   std::vector<std::string> outputs;
-  for (const char* name : {"summary.json", "summary.csv", "batch.pvd"})
+  for (const char* name : {"summary.json", "summary.csv", "batch.pvd", kLockName})
     outputs.push_back((fs::path(spec.outputDir) / name).string());
   for (const BatchJob& job : spec.jobs) {
     for (const std::string& f :
@@ -174,6 +216,7 @@ void runBatch(const BatchArgs& a) {
   const ModelData model = readModelFile(spec.modelPath);
   const std::uint64_t modelHash = fileHash(spec.modelPath);
   ensureDirectory(spec.outputDir);
+  const OutputDirLock lock(spec.outputDir);
   const std::string summaryPath = (fs::path(spec.outputDir) / "summary.json").string();
   const json previous = readPreviousSummary(summaryPath);
 
@@ -295,7 +338,8 @@ void registerBatch(CLI::App& root) {
       "Run the blend jobs of a JSON spec over one model, in parallel. Writes <output_dir>/<job>"
       ".vtu and .vtp per job, batch.pvd (all finished jobs, time = job index), summary.json and "
       "summary.csv (quality figures per job). A failing job is reported and the others go on; "
-      "the exit code is non-zero if any failed. Re-running skips jobs that summary.json marks "
+      "the exit code is non-zero if any failed. A second run on the same output_dir while one "
+      "is running is refused. Re-running skips jobs that summary.json marks "
       "done with the same fingerprint (model bytes, method, weights, options) whose files exist. "
       "Spec: {\"model\", \"output_dir\" (default <spec>_out), \"method\" (default kaji), "
       "\"consistency\" (on), \"nonlinear\" (false), \"surface_formats\" ([]), \"threads\" (0), "

@@ -1,6 +1,10 @@
 // tetblend batch: jobs in parallel, a failing job reported while the others
 // are written, resume skipping finished jobs, summary and collection files.
 
+#include <fcntl.h>
+#include <sys/file.h>
+#include <unistd.h>
+
 #include <nlohmann/json.hpp>
 #include <thread>
 
@@ -135,9 +139,9 @@ TEST_F(BatchCommand, SecondRunSkipsFinishedJobsAndRerunsEditedOnes) {
 
 TEST_F(BatchCommand, SummaryCsvQuotesCommasAndQuotes) {
   const std::string method = "kaji, \"fast\"";  // an unknown method: its job fails
-  const fs::path spec = writeSpec(json::array(
-      {{{"name", "rest"}, {"weights", {0, 0}}},
-       {{"name", "odd"}, {"weights", {0, 1}}, {"method", method}}}));
+  const fs::path spec =
+      writeSpec(json::array({{{"name", "rest"}, {"weights", {0, 0}}},
+                             {{"name", "odd"}, {"weights", {0, 1}}, {"method", method}}}));
   expectOneLineError(tetblend({"batch", spec.string()}, dir_));
   const auto rows = parseCsv(slurp(dir_ / "out" / "summary.csv"));
   ASSERT_EQ(rows.size(), 3u);  // header + 2 jobs
@@ -148,6 +152,22 @@ TEST_F(BatchCommand, SummaryCsvQuotesCommasAndQuotes) {
   EXPECT_EQ(rows[2][1], method);
   EXPECT_EQ(rows[2][2], "failed");
   EXPECT_EQ(rows[2].back(), summary()["jobs"][1]["error"].get<std::string>());
+}
+
+TEST_F(BatchCommand, SecondConcurrentRunIsRefused) {
+  const fs::path spec = writeSpec(json::array({{{"name", "a"}, {"weights", {0.25, 0}}}}));
+  fs::create_directories(dir_ / "out");
+  const std::string lockPath = (dir_ / "out" / ".tetblend-batch.lock").string();
+  const int fd = ::open(lockPath.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+  ASSERT_GE(fd, 0);
+  ASSERT_EQ(::flock(fd, LOCK_EX | LOCK_NB), 0);  // as a running batch holds it
+  const RunResult r = tetblend({"batch", spec.string()}, dir_);
+  expectOneLineError(r);
+  EXPECT_NE(r.err.find((dir_ / "out").string()), std::string::npos) << r.err;
+  EXPECT_EQ(listDir(dir_ / "out"), std::vector<std::string>{".tetblend-batch.lock"});
+  ::close(fd);  // the first run ends
+  EXPECT_EQ(tetblend({"batch", spec.string()}, dir_).code, 0);
+  EXPECT_TRUE(fs::exists(dir_ / "out" / "a.vtu"));
 }
 
 TEST_F(BatchCommand, BadSpecIsOneLineError) {
