@@ -170,6 +170,49 @@ TEST_F(BatchCommand, SecondConcurrentRunIsRefused) {
   EXPECT_TRUE(fs::exists(dir_ / "out" / "a.vtu"));
 }
 
+TEST_F(BatchCommand, RunKilledBeforeTheSummaryKeepsItsFinishedJobs) {
+  json jobs = json::array(
+      {{{"name", "a"}, {"weights", {0.25, 0}}}, {{"name", "b"}, {"weights", {0, 0.75}}}});
+  fs::path spec = writeSpec(jobs);
+  ASSERT_EQ(tetblend({"batch", spec.string()}, dir_).code, 0);
+  const auto timeA = fs::last_write_time(dir_ / "out" / "a.vtu");
+  const auto timeB = fs::last_write_time(dir_ / "out" / "b.vtu");
+  std::this_thread::sleep_for(std::chrono::milliseconds(20));
+
+  // As after kill -9 before the end: no summary, the writer's temporaries left,
+  // the journal's last line cut short.
+  fs::remove(dir_ / "out" / "summary.json");
+  fs::remove(dir_ / "out" / "summary.csv");
+  std::ofstream(dir_ / "out" / ".b.vtp.1234567.tmp") << "partial";
+  std::ofstream(dir_ / "out" / ".mine.txt.42.tmp") << "not a batch output";
+  std::ofstream(dir_ / "out" / ".tetblend-batch.journal", std::ios::app)
+      << "{\"name\": \"b\", \"fi";
+  ASSERT_EQ(tetblend({"batch", spec.string()}, dir_).code, 0);
+  json s = summary();
+  ASSERT_EQ(s["jobs"].size(), 2u);
+  for (const json& job : s["jobs"]) {
+    EXPECT_EQ(job["status"], "done");
+    EXPECT_TRUE(job["skipped_this_run"].get<bool>());
+    EXPECT_DOUBLE_EQ(job["quality"]["inverted_tets"].get<double>(), 0.0);
+  }
+  EXPECT_EQ(fs::last_write_time(dir_ / "out" / "a.vtu"), timeA);
+  EXPECT_EQ(fs::last_write_time(dir_ / "out" / "b.vtu"), timeB);
+  EXPECT_TRUE(fs::exists(dir_ / "out" / "summary.csv"));
+  EXPECT_FALSE(fs::exists(dir_ / "out" / ".b.vtp.1234567.tmp"));
+  EXPECT_TRUE(fs::exists(dir_ / "out" / ".mine.txt.42.tmp"));
+
+  // A stale journal line (the spec's weights changed since) reruns its job.
+  fs::remove(dir_ / "out" / "summary.json");
+  jobs[1]["weights"] = {0, 0.5};
+  spec = writeSpec(jobs);
+  ASSERT_EQ(tetblend({"batch", spec.string()}, dir_).code, 0);
+  s = summary();
+  EXPECT_TRUE(s["jobs"][0]["skipped_this_run"].get<bool>());
+  EXPECT_FALSE(s["jobs"][1]["skipped_this_run"].get<bool>());
+  EXPECT_EQ(fs::last_write_time(dir_ / "out" / "a.vtu"), timeA);
+  EXPECT_NE(fs::last_write_time(dir_ / "out" / "b.vtu"), timeB);
+}
+
 TEST_F(BatchCommand, BadSpecIsOneLineError) {
   std::ofstream(dir_ / "broken.json") << "{ \"model\": ";
   expectOneLineError(tetblend({"batch", (dir_ / "broken.json").string()}, dir_));
