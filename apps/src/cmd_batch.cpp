@@ -1,25 +1,42 @@
 // tetblend batch: many blends of one model from a JSON spec (batch_spec.h),
 // in parallel, with a summary table and a .pvd of the results.
 //
-// Resume rule: the summary (<output_dir>/summary.json) is the done-marker. A
-// job is skipped when the previous summary lists it as "done" with the same
+// Resume rule: the journal (<output_dir>/.tetblend-batch.journal, one JSON
+// line per finished job: name, fingerprint, files, quality) is the
+// done-marker. A job's line is appended and fsync'd right after its files are
+// renamed into place and synced, so a run killed at any point keeps the jobs
+// it finished. A job is skipped when its last journal line has the same
 // fingerprint (FNV-1a 64 of the model file's bytes, the job's method,
 // weights, consistency, nonlinear and surface formats) and all its output
-// files still exist. Editing a job, or re-preparing the model, reruns it.
+// files still exist. Editing a job, or re-preparing the model, reruns it. At
+// start the journal is rewritten with only the lines still valid (dropping a
+// line cut by a kill) and the atomic writer's temporaries of killed runs
+// (.<output name>.<digits>.tmp) are removed.
+//
+// One run per output directory: a run holds an exclusive flock on
+// <output_dir>/.tetblend-batch.lock (released by the kernel when the process
+// ends, even by kill -9); a second run on the same directory is refused.
 //
 // Concurrency: the blender's stitch keeps one workspace, so the blends
 // themselves take turns (each is parallel over tets inside); the quality
 // figures and the compressed output files of different jobs are made
 // concurrently by the job workers.
 
+#include <fcntl.h>
+#include <sys/file.h>
+#include <unistd.h>
+
 #include <atomic>
+#include <cerrno>
 #include <chrono>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <map>
 #include <memory>
 #include <mutex>
+#include <set>
 #include <sstream>
 #include <thread>
 
@@ -40,6 +57,39 @@ namespace {
 
 namespace fs = std::filesystem;
 using nlohmann::json;
+
+constexpr const char* kLockName = ".tetblend-batch.lock";
+constexpr const char* kJournalName = ".tetblend-batch.journal";
+
+/// Holds an exclusive, non-blocking flock on <dir>/.tetblend-batch.lock for
+/// its lifetime; InputError naming `dir` when another process holds it.
+class OutputDirLock {
+ public:
+  explicit OutputDirLock(const std::string& dir) {
+    const std::string path = (fs::path(dir) / kLockName).string();
+    fd_ = ::open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC | O_NOFOLLOW, 0644);
+    if (fd_ < 0) {
+      throw InputError(path + ": cannot open the lock file (" + std::strerror(errno) + ")");
+    }
+    if (::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
+      const int err = errno;
+      ::close(fd_);
+      if (err == EWOULDBLOCK) {
+        throw InputError(dir +
+                         ": another 'tetblend batch' is running on this output directory (it "
+                         "holds " +
+                         path + "); wait for it to end or choose another output_dir");
+      }
+      throw InputError(path + ": cannot lock (" + std::strerror(err) + ")");
+    }
+  }
+  ~OutputDirLock() { ::close(fd_); }
+  OutputDirLock(const OutputDirLock&) = delete;
+  OutputDirLock& operator=(const OutputDirLock&) = delete;
+
+ private:
+  int fd_ = -1;
+};
 
 struct BatchArgs {
   std::string spec;
@@ -78,14 +128,56 @@ std::string fingerprint(const BatchSpec& spec, const BatchJob& job, std::uint64_
   return hex64(fnv1a64(reinterpret_cast<const unsigned char*>(key.data()), key.size()));
 }
 
-json readPreviousSummary(const std::string& path) {
+/// The last journal line of each job name; lines that do not parse (one cut
+/// by a kill, a foreign file) mark nothing done.
+std::map<std::string, json> readJournal(const std::string& path) {
+  std::map<std::string, json> records;
   std::ifstream in(path);
-  if (!in) return json::object();
-  try {
-    return json::parse(in);
-  } catch (const json::exception&) {
-    return json::object();  // a foreign or damaged summary marks nothing done
+  std::string line;
+  while (std::getline(in, line)) {
+    try {
+      json r = json::parse(line);
+      if (r.is_object() && r.contains("name") && r["name"].is_string() &&
+          r.contains("fingerprint") && r["fingerprint"].is_string()) {
+        const std::string name = r["name"].get<std::string>();
+        records[name] = std::move(r);
+      }
+    } catch (const json::exception&) {
+    }
   }
+  return records;
+}
+
+/// fsync of a file or directory: its data, or the renames into it, on disk.
+void syncPath(const std::string& path) {
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) throw InputError(path + ": cannot open to sync (" + std::strerror(errno) + ")");
+  const int rc = ::fsync(fd);
+  const int err = errno;
+  ::close(fd);
+  if (rc != 0) throw InputError(path + ": cannot sync (" + std::strerror(err) + ")");
+}
+
+/// Removes from `dir` the temporaries of writeFileAtomically
+/// (.<name>.<digits>.tmp) whose <name> is one of `outputs`' file names; only
+/// a killed run leaves them, and the caller holds the directory's lock.
+void removeStaleTemporaries(const std::string& dir, const std::vector<std::string>& outputs) {
+  std::set<std::string> names;
+  for (const std::string& o : outputs) names.insert(fs::path(o).filename().string());
+  std::error_code ec;
+  std::vector<fs::path> stale;
+  for (const auto& e : fs::directory_iterator(dir, ec)) {
+    const std::string n = e.path().filename().string();
+    if (n.size() < 7 || n[0] != '.' || n.compare(n.size() - 4, 4, ".tmp") != 0) continue;
+    const std::string stem = n.substr(1, n.size() - 5);  // <name>.<digits>
+    const std::size_t dot = stem.rfind('.');
+    if (dot == std::string::npos || dot + 1 == stem.size()) continue;
+    const bool digits = std::all_of(stem.begin() + static_cast<std::ptrdiff_t>(dot) + 1, stem.end(),
+                                    [](char c) { return c >= '0' && c <= '9'; });
+    if (digits && names.count(stem.substr(0, dot)) && !e.is_directory(ec))
+      stale.push_back(e.path());
+  }
+  for (const fs::path& p : stale) fs::remove(p, ec);
 }
 
 std::vector<double> jobWeights(const BatchJob& job, std::size_t exampleCount) {
@@ -106,6 +198,59 @@ void writeText(const std::string& path, const std::string& text) {
     if (!out.flush()) throw InputError(path + ": cannot write");
   });
 }
+
+/// One CSV field per RFC 4180: in double quotes, inner quotes doubled, when it
+/// holds a comma, a quote, CR or LF; as is otherwise.
+std::string csvField(const std::string& text) {
+  if (text.find_first_of(",\"\r\n") == std::string::npos) return text;
+  std::string quoted = "\"";
+  for (const char c : text) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return quoted + "\"";
+}
+
+/// The journal of finished jobs, open for appending.
+class Journal {
+ public:
+  /// Rewrites <dir>/.tetblend-batch.journal with `kept` (one line each).
+  Journal(const std::string& dir, const std::vector<json>& kept)
+      : dir_(dir), path_((fs::path(dir) / kJournalName).string()) {
+    std::string text;
+    for (const json& r : kept) text += r.dump() + "\n";
+    writeText(path_, text);
+    fd_ = ::open(path_.c_str(), O_WRONLY | O_APPEND | O_CLOEXEC | O_NOFOLLOW);
+    if (fd_ < 0) throw InputError(path_ + ": cannot open (" + std::strerror(errno) + ")");
+    if (::fsync(fd_) != 0) {
+      const int err = errno;
+      ::close(fd_);
+      throw InputError(path_ + ": cannot sync (" + std::strerror(err) + ")");
+    }
+  }
+  ~Journal() { ::close(fd_); }
+  Journal(const Journal&) = delete;
+  Journal& operator=(const Journal&) = delete;
+
+  /// Syncs `record["files"]` and the directory, then appends `record` as one
+  /// line and syncs the journal. Thread-safe.
+  void append(const json& record) {
+    for (const json& f : record["files"]) syncPath(f.get<std::string>());
+    syncPath(dir_);
+    const std::string line = record.dump() + "\n";
+    std::lock_guard<std::mutex> lock(mutex_);
+    for (std::size_t done = 0; done < line.size();) {
+      const ssize_t n = ::write(fd_, line.data() + done, line.size() - done);
+      if (n < 0 && errno == EINTR) continue;
+      if (n <= 0) throw InputError(path_ + ": cannot append (" + std::strerror(errno) + ")");
+      done += static_cast<std::size_t>(n);
+    }
+    if (::fsync(fd_) != 0) throw InputError(path_ + ": cannot sync (" + std::strerror(errno) + ")");
+  }
+
+ private:
+  std::string dir_;
+  std::string path_;
+  std::mutex mutex_;
+  int fd_ = -1;
+};
 
 void writeSummaries(const BatchSpec& spec, const std::vector<std::string>& fingerprints,
                     const std::vector<JobOutcome>& outcomes) {
@@ -137,15 +282,14 @@ void writeSummaries(const BatchSpec& spec, const std::vector<std::string>& finge
     std::string weights;
     if (job.weights.is_array())
       for (const json& x : job.weights) weights += (weights.empty() ? "" : " ") + x.dump();
-    csv << job.name << "," << job.method << "," << (o.done ? "done" : "failed") << "," << weights;
+    csv << csvField(job.name) << "," << csvField(job.method) << "," << (o.done ? "done" : "failed")
+        << "," << csvField(weights);
     for (const auto& c : qualityColumns(QualitySummary{})) {
       csv << ",";
-      if (o.done && quality.contains(c.first)) csv << formatNumber(quality[c.first].get<double>());
+      if (o.done && quality.contains(c.first) && quality[c.first].is_number())
+        csv << formatNumber(quality[c.first].get<double>());
     }
-    std::string error = o.error;
-    for (char& ch : error)
-      if (ch == ',' || ch == '\n' || ch == '"') ch = ';';
-    csv << "," << formatNumber(o.seconds) << "," << error << "\n";
+    csv << "," << formatNumber(o.seconds) << "," << csvField(o.error) << "\n";
   }
   writeText((fs::path(spec.outputDir) / "summary.json").string(), summary.dump(2) + "\n");
   writeText((fs::path(spec.outputDir) / "summary.csv").string(), csv.str());
@@ -156,7 +300,7 @@ void runBatch(const BatchArgs& a) {
   const std::vector<std::string> formats = parseSurfaceFormats(spec.surfaceFormats);
   const bool consistency = parseOnOff(spec.consistency, a.spec + ": \"consistency\"");
   std::vector<std::string> outputs;
-  for (const char* name : {"summary.json", "summary.csv", "batch.pvd"})
+  for (const char* name : {"summary.json", "summary.csv", "batch.pvd", kLockName, kJournalName})
     outputs.push_back((fs::path(spec.outputDir) / name).string());
   for (const BatchJob& job : spec.jobs) {
     for (const std::string& f :
@@ -167,8 +311,12 @@ void runBatch(const BatchArgs& a) {
   const ModelData model = readModelFile(spec.modelPath);
   const std::uint64_t modelHash = fileHash(spec.modelPath);
   ensureDirectory(spec.outputDir);
+  const OutputDirLock lock(spec.outputDir);
+  removeStaleTemporaries(spec.outputDir, outputs);
   const std::string summaryPath = (fs::path(spec.outputDir) / "summary.json").string();
-  const json previous = readPreviousSummary(summaryPath);
+  const std::map<std::string, json> previous =
+      readJournal((fs::path(spec.outputDir) / kJournalName).string());
+  std::vector<json> kept;  // journal lines of the jobs skipped this run
 
   const std::size_t n = spec.jobs.size();
   std::vector<std::string> fingerprints(n);
@@ -179,24 +327,20 @@ void runBatch(const BatchArgs& a) {
     fingerprints[i] = fingerprint(spec, job, modelHash);
     const std::string vtu = (fs::path(spec.outputDir) / (job.name + ".vtu")).string();
     outcomes[i].files = blendOutputFiles(vtu, formats);
-    bool skip = false;
-    if (previous.contains("jobs") && previous["jobs"].is_array()) {
-      for (const json& e : previous["jobs"]) {
-        if (e.value("name", "") == job.name && e.value("status", "") == "done" &&
-            e.value("fingerprint", "") == fingerprints[i]) {
-          skip = true;
-          for (const std::string& f : outcomes[i].files) skip = skip && fs::exists(f);
-          if (skip) outcomes[i].previousQuality = e.value("quality", json::object());
-        }
-      }
-    }
+    const auto record = previous.find(job.name);
+    bool skip = record != previous.end() &&
+                record->second["fingerprint"].get<std::string>() == fingerprints[i];
+    for (const std::string& f : outcomes[i].files) skip = skip && fs::exists(f);
     if (skip) {
+      outcomes[i].previousQuality = record->second.value("quality", json::object());
+      kept.push_back(record->second);
       outcomes[i].done = outcomes[i].skipped = true;
     } else {
       pendingJobs.push_back(i);
     }
   }
 
+  Journal journal(spec.outputDir, kept);
   if (!pendingJobs.empty()) {
     std::map<std::string, std::string> methodError;  // method name -> why it cannot run
     std::vector<BlendMethod> methods;
@@ -245,6 +389,12 @@ void runBatch(const BatchArgs& a) {
           }
           writeBlendResult(o.files.front(), model, shape.vertices, shape.cellData, formats);
           o.quality = shape.quality;
+          json quality = json::object();
+          for (const auto& c : qualityColumns(o.quality)) quality[c.first] = c.second;
+          journal.append({{"name", job.name},
+                          {"fingerprint", fingerprints[i]},
+                          {"files", o.files},
+                          {"quality", quality}});
           o.done = true;
         } catch (const std::exception& e) {
           o.error = e.what();
@@ -288,8 +438,10 @@ void registerBatch(CLI::App& root) {
       "Run the blend jobs of a JSON spec over one model, in parallel. Writes <output_dir>/<job>"
       ".vtu and .vtp per job, batch.pvd (all finished jobs, time = job index), summary.json and "
       "summary.csv (quality figures per job). A failing job is reported and the others go on; "
-      "the exit code is non-zero if any failed. Re-running skips jobs that summary.json marks "
-      "done with the same fingerprint (model bytes, method, weights, options) whose files exist. "
+      "the exit code is non-zero if any failed. A second run on the same output_dir while one "
+      "is running is refused. Re-running (also after a kill) skips jobs that the journal "
+      "<output_dir>/.tetblend-batch.journal records as done with the same fingerprint (model "
+      "bytes, method, weights, options) whose files exist. "
       "Spec: {\"model\", \"output_dir\" (default <spec>_out), \"method\" (default kaji), "
       "\"consistency\" (on), \"nonlinear\" (false), \"surface_formats\" ([]), \"threads\" (0), "
       "\"jobs\": [{\"name\", \"weights\": [..], \"method\"}]}; paths relative to the spec.");

@@ -1,6 +1,10 @@
 // tetblend batch: jobs in parallel, a failing job reported while the others
 // are written, resume skipping finished jobs, summary and collection files.
 
+#include <fcntl.h>
+#include <sys/file.h>
+#include <unistd.h>
+
 #include <nlohmann/json.hpp>
 #include <thread>
 
@@ -11,6 +15,48 @@ namespace {
 
 using nlohmann::json;
 constexpr double kInterpolationTolerance = 1e-7 * 4.1;  // as in blend_test.cpp
+
+/// Rows of RFC 4180 CSV text: fields split at commas outside double quotes, a
+/// quoted field's "" read as one quote, rows ended by LF or CRLF outside quotes.
+/// Independent of the writer in cmd_batch.cpp.
+std::vector<std::vector<std::string>> parseCsv(const std::string& text) {
+  std::vector<std::vector<std::string>> rows;
+  std::vector<std::string> row;
+  std::string field;
+  bool quoted = false;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const char c = text[i];
+    if (quoted) {
+      if (c == '"' && i + 1 < text.size() && text[i + 1] == '"') {
+        field += '"';
+        ++i;
+      } else if (c == '"') {
+        quoted = false;
+      } else {
+        field += c;
+      }
+    } else if (c == '"') {
+      quoted = true;
+    } else if (c == ',') {
+      row.push_back(field);
+      field.clear();
+    } else if (c == '\n' || (c == '\r' && i + 1 < text.size() && text[i + 1] == '\n')) {
+      if (c == '\r') ++i;
+      row.push_back(field);
+      field.clear();
+      rows.push_back(row);
+      row.clear();
+    } else {
+      field += c;
+    }
+  }
+  EXPECT_FALSE(quoted) << "unterminated quoted field";
+  if (!field.empty() || !row.empty()) {
+    row.push_back(field);
+    rows.push_back(row);
+  }
+  return rows;
+}
 
 class BatchCommand : public ::testing::Test {
  protected:
@@ -89,6 +135,82 @@ TEST_F(BatchCommand, SecondRunSkipsFinishedJobsAndRerunsEditedOnes) {
   ASSERT_EQ(tetblend({"batch", spec.string()}, dir_).code, 0);
   EXPECT_FALSE(summary()["jobs"][0]["skipped_this_run"].get<bool>());
   EXPECT_TRUE(fs::exists(dir_ / "out" / "a.vtp"));
+}
+
+TEST_F(BatchCommand, SummaryCsvQuotesCommasAndQuotes) {
+  const std::string method = "kaji, \"fast\"";  // an unknown method: its job fails
+  const fs::path spec =
+      writeSpec(json::array({{{"name", "rest"}, {"weights", {0, 0}}},
+                             {{"name", "odd"}, {"weights", {0, 1}}, {"method", method}}}));
+  expectOneLineError(tetblend({"batch", spec.string()}, dir_));
+  const auto rows = parseCsv(slurp(dir_ / "out" / "summary.csv"));
+  ASSERT_EQ(rows.size(), 3u);  // header + 2 jobs
+  for (const auto& row : rows) EXPECT_EQ(row.size(), rows[0].size());
+  EXPECT_EQ(rows[0][0], "name");
+  EXPECT_EQ(rows[0][1], "method");
+  EXPECT_EQ(rows[2][0], "odd");
+  EXPECT_EQ(rows[2][1], method);
+  EXPECT_EQ(rows[2][2], "failed");
+  EXPECT_EQ(rows[2].back(), summary()["jobs"][1]["error"].get<std::string>());
+}
+
+TEST_F(BatchCommand, SecondConcurrentRunIsRefused) {
+  const fs::path spec = writeSpec(json::array({{{"name", "a"}, {"weights", {0.25, 0}}}}));
+  fs::create_directories(dir_ / "out");
+  const std::string lockPath = (dir_ / "out" / ".tetblend-batch.lock").string();
+  const int fd = ::open(lockPath.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+  ASSERT_GE(fd, 0);
+  ASSERT_EQ(::flock(fd, LOCK_EX | LOCK_NB), 0);  // as a running batch holds it
+  const RunResult r = tetblend({"batch", spec.string()}, dir_);
+  expectOneLineError(r);
+  EXPECT_NE(r.err.find((dir_ / "out").string()), std::string::npos) << r.err;
+  EXPECT_EQ(listDir(dir_ / "out"), std::vector<std::string>{".tetblend-batch.lock"});
+  ::close(fd);  // the first run ends
+  EXPECT_EQ(tetblend({"batch", spec.string()}, dir_).code, 0);
+  EXPECT_TRUE(fs::exists(dir_ / "out" / "a.vtu"));
+}
+
+TEST_F(BatchCommand, RunKilledBeforeTheSummaryKeepsItsFinishedJobs) {
+  json jobs = json::array(
+      {{{"name", "a"}, {"weights", {0.25, 0}}}, {{"name", "b"}, {"weights", {0, 0.75}}}});
+  fs::path spec = writeSpec(jobs);
+  ASSERT_EQ(tetblend({"batch", spec.string()}, dir_).code, 0);
+  const auto timeA = fs::last_write_time(dir_ / "out" / "a.vtu");
+  const auto timeB = fs::last_write_time(dir_ / "out" / "b.vtu");
+  std::this_thread::sleep_for(std::chrono::milliseconds(20));
+
+  // As after kill -9 before the end: no summary, the writer's temporaries left,
+  // the journal's last line cut short.
+  fs::remove(dir_ / "out" / "summary.json");
+  fs::remove(dir_ / "out" / "summary.csv");
+  std::ofstream(dir_ / "out" / ".b.vtp.1234567.tmp") << "partial";
+  std::ofstream(dir_ / "out" / ".mine.txt.42.tmp") << "not a batch output";
+  std::ofstream(dir_ / "out" / ".tetblend-batch.journal", std::ios::app)
+      << "{\"name\": \"b\", \"fi";
+  ASSERT_EQ(tetblend({"batch", spec.string()}, dir_).code, 0);
+  json s = summary();
+  ASSERT_EQ(s["jobs"].size(), 2u);
+  for (const json& job : s["jobs"]) {
+    EXPECT_EQ(job["status"], "done");
+    EXPECT_TRUE(job["skipped_this_run"].get<bool>());
+    EXPECT_DOUBLE_EQ(job["quality"]["inverted_tets"].get<double>(), 0.0);
+  }
+  EXPECT_EQ(fs::last_write_time(dir_ / "out" / "a.vtu"), timeA);
+  EXPECT_EQ(fs::last_write_time(dir_ / "out" / "b.vtu"), timeB);
+  EXPECT_TRUE(fs::exists(dir_ / "out" / "summary.csv"));
+  EXPECT_FALSE(fs::exists(dir_ / "out" / ".b.vtp.1234567.tmp"));
+  EXPECT_TRUE(fs::exists(dir_ / "out" / ".mine.txt.42.tmp"));
+
+  // A stale journal line (the spec's weights changed since) reruns its job.
+  fs::remove(dir_ / "out" / "summary.json");
+  jobs[1]["weights"] = {0, 0.5};
+  spec = writeSpec(jobs);
+  ASSERT_EQ(tetblend({"batch", spec.string()}, dir_).code, 0);
+  s = summary();
+  EXPECT_TRUE(s["jobs"][0]["skipped_this_run"].get<bool>());
+  EXPECT_FALSE(s["jobs"][1]["skipped_this_run"].get<bool>());
+  EXPECT_EQ(fs::last_write_time(dir_ / "out" / "a.vtu"), timeA);
+  EXPECT_NE(fs::last_write_time(dir_ / "out" / "b.vtu"), timeB);
 }
 
 TEST_F(BatchCommand, BadSpecIsOneLineError) {
