@@ -17,8 +17,9 @@
 // <output_dir>/.tetblend-batch.lock (released by the kernel when the process
 // ends, even by kill -9); a second run on the same directory is refused.
 //
-// Concurrency: the blender's stitch keeps one workspace, so the blends
-// themselves take turns (each is parallel over tets inside); the quality
+// Concurrency: the blends take turns behind a mutex (each is parallel over
+// tets inside; the stitch itself is safe for concurrent use, so the mutex is
+// a throughput choice, measured by issue 13's batch work); the quality
 // figures and the compressed output files of different jobs are made
 // concurrently by the job workers.
 
