@@ -18,8 +18,9 @@
 // ends, even by kill -9); a second run on the same directory is refused.
 //
 // Concurrency: the blends take turns behind a mutex (each is parallel over
-// tets inside; the stitch itself is safe for concurrent use, so the mutex is
-// a throughput choice, measured by issue 13's batch work); the quality
+// tets inside). The stitch itself is documented and tested safe for
+// concurrent use; whether concurrent blends are faster here is not measured
+// yet (issue 13). The quality
 // figures and the compressed output files of different jobs are made
 // concurrently by the job workers.
 
