@@ -207,6 +207,17 @@ struct Malformed {
   const char* expected;  // substring of the message, with the line number
 };
 
+// Writes each case's file and expects reading it to fail with its message.
+void expectMessages(const std::vector<Malformed>& cases) {
+  TempDir dir;
+  for (const Malformed& c : cases) {
+    SCOPED_TRACE(c.content);
+    writeText(dir.file(c.file), c.content);
+    const std::string message = messageOf(dir.file(c.file));
+    EXPECT_NE(message.find(c.expected), std::string::npos) << message;
+  }
+}
+
 TEST(SurfaceIo, MalformedFilesThrowInputErrorNamingLineAndValue) {
   const std::vector<Malformed> cases = {
       {"a.obj", "v 1 2\n", "a.obj:1: expected 3 coordinates for vertex 0"},
@@ -261,13 +272,7 @@ TEST(SurfaceIo, MalformedFilesThrowInputErrorNamingLineAndValue) {
       {"a.vtp", "<VTKFile type=\"PolyData\"> broken", "a.vtp: VTK could not read the file"},
       {"a.vtp", "solid s\n", "a.vtp: not a VTK XML PolyData file"},
   };
-  TempDir dir;
-  for (const Malformed& c : cases) {
-    SCOPED_TRACE(c.content);
-    writeText(dir.file(c.file), c.content);
-    const std::string message = messageOf(dir.file(c.file));
-    EXPECT_NE(message.find(c.expected), std::string::npos) << message;
-  }
+  expectMessages(cases);
 }
 
 // Issue 11, item 1: the vertex matrix was sized from the last 'element vertex'
@@ -313,13 +318,7 @@ TEST(SurfaceIo, HeaderCountsBeyondTheDataEndInOneErrorNamingTheFile) {
        "a.off:3: file ends after 1 of 2147483647 vertices"},
       {"a.off", "OFF 0 2147483000 0\n", "a.off:1: file ends after 0 of 2147483000 faces"},
   };
-  TempDir dir;
-  for (const Malformed& c : cases) {
-    SCOPED_TRACE(c.content);
-    writeText(dir.file(c.file), c.content);
-    const std::string message = messageOf(dir.file(c.file));
-    EXPECT_NE(message.find(c.expected), std::string::npos) << message;
-  }
+  expectMessages(cases);
 }
 
 // Issue 11 (no crash on any input): a list length read as NaN, a fraction or
