@@ -70,6 +70,21 @@ class BatchCommand : public ::testing::Test {
     return dir_ / "spec.json";
   }
   json summary() const { return json::parse(slurp(dir_ / "out" / "summary.json")); }
+  /// A finished batch of two jobs, a and b, with their .vtu write times.
+  struct TwoJobs {
+    json jobs;
+    fs::path spec;
+    fs::file_time_type timeA, timeB;
+  };
+  void runTwoJobs(TwoJobs& run) const {
+    run.jobs = json::array(
+        {{{"name", "a"}, {"weights", {0.25, 0}}}, {{"name", "b"}, {"weights", {0, 0.75}}}});
+    run.spec = writeSpec(run.jobs);
+    ASSERT_EQ(tetblend({"batch", run.spec.string()}, dir_).code, 0);
+    run.timeA = fs::last_write_time(dir_ / "out" / "a.vtu");
+    run.timeB = fs::last_write_time(dir_ / "out" / "b.vtu");
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));  // later writes get later times
+  }
   fs::path dir_;
   fs::path model_;
 };
@@ -108,13 +123,12 @@ TEST_F(BatchCommand, FailingJobIsReportedAndTheOthersAreWritten) {
 }
 
 TEST_F(BatchCommand, SecondRunSkipsFinishedJobsAndRerunsEditedOnes) {
-  json jobs = json::array(
-      {{{"name", "a"}, {"weights", {0.25, 0}}}, {{"name", "b"}, {"weights", {0, 0.75}}}});
-  fs::path spec = writeSpec(jobs);
-  ASSERT_EQ(tetblend({"batch", spec.string()}, dir_).code, 0);
-  const auto timeA = fs::last_write_time(dir_ / "out" / "a.vtu");
-  const auto timeB = fs::last_write_time(dir_ / "out" / "b.vtu");
-  std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  TwoJobs run;
+  ASSERT_NO_FATAL_FAILURE(runTwoJobs(run));
+  json& jobs = run.jobs;
+  fs::path& spec = run.spec;
+  const auto timeA = run.timeA;
+  const auto timeB = run.timeB;
 
   ASSERT_EQ(tetblend({"batch", spec.string()}, dir_).code, 0);
   json s = summary();
@@ -171,13 +185,12 @@ TEST_F(BatchCommand, SecondConcurrentRunIsRefused) {
 }
 
 TEST_F(BatchCommand, RunKilledBeforeTheSummaryKeepsItsFinishedJobs) {
-  json jobs = json::array(
-      {{{"name", "a"}, {"weights", {0.25, 0}}}, {{"name", "b"}, {"weights", {0, 0.75}}}});
-  fs::path spec = writeSpec(jobs);
-  ASSERT_EQ(tetblend({"batch", spec.string()}, dir_).code, 0);
-  const auto timeA = fs::last_write_time(dir_ / "out" / "a.vtu");
-  const auto timeB = fs::last_write_time(dir_ / "out" / "b.vtu");
-  std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  TwoJobs run;
+  ASSERT_NO_FATAL_FAILURE(runTwoJobs(run));
+  json& jobs = run.jobs;
+  fs::path& spec = run.spec;
+  const auto timeA = run.timeA;
+  const auto timeB = run.timeB;
 
   // As after kill -9 before the end: no summary, the writer's temporaries left,
   // the journal's last line cut short.

@@ -124,8 +124,24 @@ struct Malformed {
   const char* expected;  // substring of the message, with the line number
 };
 
+// Writes each case's file and expects reading it to fail with its message.
+// A valid partner file (one tet beside a .node, four points beside a .ele)
+// makes the error come from the file under test.
+void expectMessages(const std::vector<Malformed>& cases) {
+  TempDir dir;
+  for (const Malformed& c : cases) {
+    SCOPED_TRACE(c.content);
+    writeText(dir.file(c.file), c.content);
+    if (std::string(c.file) == "a.node") writeText(dir.file("a.ele"), "1 4 0\n0 0 1 2 3\n");
+    if (std::string(c.file) == "a.ele") {
+      writeText(dir.file("a.node"), "4 3 0 0\n0 0 0 0\n1 1 0 0\n2 0 1 0\n3 0 0 1\n");
+    }
+    const std::string message = messageOf(dir.file(c.file));
+    EXPECT_NE(message.find(c.expected), std::string::npos) << message;
+  }
+}
+
 TEST(TetMeshIo, MalformedFilesThrowInputErrorNamingLineAndValue) {
-  const char* kEle = "1 4 0\n0 0 1 2 3\n";
   const std::vector<Malformed> cases = {
       {"a.node", "4 2 0 0\n", "a.node:1: dimension '2' is not 3"},
       {"a.node", "1 3 0 0\n5 0 0 0\n", "a.node:2: first point index 5 is neither 0 nor 1"},
@@ -153,18 +169,7 @@ TEST(TetMeshIo, MalformedFilesThrowInputErrorNamingLineAndValue) {
       {"a.mesh", "Dimension 3\nVertices 2\n0 0 0 0\n1 1 1\n",
        "a.mesh:4: file ends before the reference of vertex 1"},
   };
-  TempDir dir;
-  for (const Malformed& c : cases) {
-    SCOPED_TRACE(c.content);
-    writeText(dir.file(c.file), c.content);
-    // A valid partner file, so the error comes from the file under test.
-    if (std::string(c.file) == "a.node") writeText(dir.file("a.ele"), kEle);
-    if (std::string(c.file) == "a.ele") {
-      writeText(dir.file("a.node"), "4 3 0 0\n0 0 0 0\n1 1 0 0\n2 0 1 0\n3 0 0 1\n");
-    }
-    const std::string message = messageOf(dir.file(c.file));
-    EXPECT_NE(message.find(c.expected), std::string::npos) << message;
-  }
+  expectMessages(cases);
 }
 
 // Issue 11, item 2: a count near 2^31 in a header allocated gigabytes
@@ -179,17 +184,7 @@ TEST(TetMeshIo, HeaderCountsBeyondTheDataEndInOneErrorNamingTheFile) {
       {"a.mesh", "Dimension 3\nVertices 1\n0 0 0 0\nTetrahedra 2147483647\n1 1 1 1 0\n",
        "a.mesh:5: file ends before tet 1 (0-based)"},
   };
-  TempDir dir;
-  for (const Malformed& c : cases) {
-    SCOPED_TRACE(c.content);
-    writeText(dir.file(c.file), c.content);
-    if (std::string(c.file) == "a.node") writeText(dir.file("a.ele"), "1 4 0\n0 0 1 2 3\n");
-    if (std::string(c.file) == "a.ele") {
-      writeText(dir.file("a.node"), "4 3 0 0\n0 0 0 0\n1 1 0 0\n2 0 1 0\n3 0 0 1\n");
-    }
-    const std::string message = messageOf(dir.file(c.file));
-    EXPECT_NE(message.find(c.expected), std::string::npos) << message;
-  }
+  expectMessages(cases);
 }
 
 TEST(TetMeshIo, VtuWithNonTetCellsIsRefused) {
