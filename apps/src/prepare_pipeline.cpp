@@ -9,6 +9,7 @@
 #include "tetblend/core/error.h"
 #include "tetblend/core/tet_geometry.h"
 #include "tetblend/meshing/example_aware_tets.h"
+#include "tetblend/meshing/self_intersection.h"
 #include "tetblend/meshing/surface_io.h"
 #include "tetblend/meshing/surface_validation.h"
 #include "tetblend/meshing/tetgen_mesher.h"
@@ -57,6 +58,20 @@ double worstVolumeRatio(const TetMesh& rest, const CompatibleTetResult& placed) 
   return worst;
 }
 
+// --strict fails fast: an example whose surface intersects itself is refused
+// before any meshing, since some of its tets can never be embedded.
+void refuseSelfIntersecting(const Triangles& triangles, const std::vector<SurfaceMesh>& examples,
+                            const std::vector<std::string>& examplePaths) {
+  for (std::size_t k = 0; k < examples.size(); ++k) {
+    const SelfIntersections found = findSelfIntersections(examples[k].vertices, triangles, 1);
+    if (found.pairCount > 0) {
+      throw InputError(examplePaths[k] + ": " + diagnosis(found) +
+                       ", so some tets cannot be embedded: repair the pose, or leave out --strict "
+                       "to exclude those tets from the stitch");
+    }
+  }
+}
+
 }  // namespace
 
 void addPrepareOptions(CLI::App& command, PrepareSettings& settings) {
@@ -102,6 +117,7 @@ ModelData prepareModel(const std::string& restPath, const std::vector<std::strin
                                 "): blending this example changes nothing");
     }
   }
+  if (settings.strict) refuseSelfIntersecting(rest.triangles, examples, examplePaths);
   progress.advance();
 
   ModelData model;
