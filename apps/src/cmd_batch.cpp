@@ -24,24 +24,16 @@
 // figures and the compressed output files of different jobs are made
 // concurrently by the job workers.
 
-#include <fcntl.h>
-#include <sys/file.h>
-#include <unistd.h>
-
 #include <atomic>
-#include <cerrno>
 #include <chrono>
-#include <cstring>
 #include <filesystem>
-#include <fstream>
-#include <iterator>
 #include <map>
 #include <memory>
 #include <mutex>
-#include <set>
 #include <sstream>
 #include <thread>
 
+#include "batch_journal.h"
 #include "batch_spec.h"
 #include "blend_output.h"
 #include "blend_setup.h"
@@ -60,39 +52,6 @@ namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-constexpr const char* kLockName = ".tetblend-batch.lock";
-constexpr const char* kJournalName = ".tetblend-batch.journal";
-
-/// Holds an exclusive, non-blocking flock on <dir>/.tetblend-batch.lock for
-/// its lifetime; InputError naming `dir` when another process holds it.
-class OutputDirLock {
- public:
-  explicit OutputDirLock(const std::string& dir) {
-    const std::string path = (fs::path(dir) / kLockName).string();
-    fd_ = ::open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC | O_NOFOLLOW, 0644);
-    if (fd_ < 0) {
-      throw InputError(path + ": cannot open the lock file (" + std::strerror(errno) + ")");
-    }
-    if (::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
-      const int err = errno;
-      ::close(fd_);
-      if (err == EWOULDBLOCK) {
-        throw InputError(dir +
-                         ": another 'tetblend batch' is running on this output directory (it "
-                         "holds " +
-                         path + "); wait for it to end or choose another output_dir");
-      }
-      throw InputError(path + ": cannot lock (" + std::strerror(err) + ")");
-    }
-  }
-  ~OutputDirLock() { ::close(fd_); }
-  OutputDirLock(const OutputDirLock&) = delete;
-  OutputDirLock& operator=(const OutputDirLock&) = delete;
-
- private:
-  int fd_ = -1;
-};
-
 struct BatchArgs {
   std::string spec;
   int threads = -1;  // -1: take the spec's value
@@ -109,79 +68,6 @@ struct JobOutcome {
   double seconds = 0.0;
 };
 
-std::string hex64(std::uint64_t v) {
-  std::ostringstream s;
-  s << std::hex << v;
-  return s.str();
-}
-
-std::uint64_t fileHash(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  const std::vector<unsigned char> bytes((std::istreambuf_iterator<char>(in)),
-                                         std::istreambuf_iterator<char>());
-  return fnv1a64(bytes.data(), bytes.size());
-}
-
-std::string fingerprint(const BatchSpec& spec, const BatchJob& job, std::uint64_t modelHash) {
-  std::string key = "model=" + hex64(modelHash) + ";method=" + job.method +
-                    ";weights=" + job.weights.dump() + ";consistency=" + spec.consistency +
-                    ";nonlinear=" + (spec.nonlinear ? "1" : "0") + ";formats=";
-  for (const std::string& f : spec.surfaceFormats) key += f + ",";
-  return hex64(fnv1a64(reinterpret_cast<const unsigned char*>(key.data()), key.size()));
-}
-
-/// The last journal line of each job name; lines that do not parse (one cut
-/// by a kill, a foreign file) mark nothing done.
-std::map<std::string, json> readJournal(const std::string& path) {
-  std::map<std::string, json> records;
-  std::ifstream in(path);
-  std::string line;
-  while (std::getline(in, line)) {
-    try {
-      json r = json::parse(line);
-      if (r.is_object() && r.contains("name") && r["name"].is_string() &&
-          r.contains("fingerprint") && r["fingerprint"].is_string()) {
-        const std::string name = r["name"].get<std::string>();
-        records[name] = std::move(r);
-      }
-    } catch (const json::exception&) {
-    }
-  }
-  return records;
-}
-
-/// fsync of a file or directory: its data, or the renames into it, on disk.
-void syncPath(const std::string& path) {
-  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
-  if (fd < 0) throw InputError(path + ": cannot open to sync (" + std::strerror(errno) + ")");
-  const int rc = ::fsync(fd);
-  const int err = errno;
-  ::close(fd);
-  if (rc != 0) throw InputError(path + ": cannot sync (" + std::strerror(err) + ")");
-}
-
-/// Removes from `dir` the temporaries of writeFileAtomically
-/// (.<name>.<digits>.tmp) whose <name> is one of `outputs`' file names; only
-/// a killed run leaves them, and the caller holds the directory's lock.
-void removeStaleTemporaries(const std::string& dir, const std::vector<std::string>& outputs) {
-  std::set<std::string> names;
-  for (const std::string& o : outputs) names.insert(fs::path(o).filename().string());
-  std::error_code ec;
-  std::vector<fs::path> stale;
-  for (const auto& e : fs::directory_iterator(dir, ec)) {
-    const std::string n = e.path().filename().string();
-    if (n.size() < 7 || n[0] != '.' || n.compare(n.size() - 4, 4, ".tmp") != 0) continue;
-    const std::string stem = n.substr(1, n.size() - 5);  // <name>.<digits>
-    const std::size_t dot = stem.rfind('.');
-    if (dot == std::string::npos || dot + 1 == stem.size()) continue;
-    const bool digits = std::all_of(stem.begin() + static_cast<std::ptrdiff_t>(dot) + 1, stem.end(),
-                                    [](char c) { return c >= '0' && c <= '9'; });
-    if (digits && names.count(stem.substr(0, dot)) && !e.is_directory(ec))
-      stale.push_back(e.path());
-  }
-  for (const fs::path& p : stale) fs::remove(p, ec);
-}
-
 std::vector<double> jobWeights(const BatchJob& job, std::size_t exampleCount) {
   if (!job.weights.is_array()) throw InputError("\"weights\" must be an array of numbers");
   std::vector<double> w;
@@ -193,14 +79,6 @@ std::vector<double> jobWeights(const BatchJob& job, std::size_t exampleCount) {
   return w;
 }
 
-void writeText(const std::string& path, const std::string& text) {
-  writeFileAtomically(path, [&](const std::string& temp) {
-    std::ofstream out(temp);
-    out << text;
-    if (!out.flush()) throw InputError(path + ": cannot write");
-  });
-}
-
 /// One CSV field per RFC 4180: in double quotes, inner quotes doubled, when it
 /// holds a comma, a quote, CR or LF; as is otherwise.
 std::string csvField(const std::string& text) {
@@ -209,50 +87,6 @@ std::string csvField(const std::string& text) {
   for (const char c : text) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
   return quoted + "\"";
 }
-
-/// The journal of finished jobs, open for appending.
-class Journal {
- public:
-  /// Rewrites <dir>/.tetblend-batch.journal with `kept` (one line each).
-  Journal(const std::string& dir, const std::vector<json>& kept)
-      : dir_(dir), path_((fs::path(dir) / kJournalName).string()) {
-    std::string text;
-    for (const json& r : kept) text += r.dump() + "\n";
-    writeText(path_, text);
-    fd_ = ::open(path_.c_str(), O_WRONLY | O_APPEND | O_CLOEXEC | O_NOFOLLOW);
-    if (fd_ < 0) throw InputError(path_ + ": cannot open (" + std::strerror(errno) + ")");
-    if (::fsync(fd_) != 0) {
-      const int err = errno;
-      ::close(fd_);
-      throw InputError(path_ + ": cannot sync (" + std::strerror(err) + ")");
-    }
-  }
-  ~Journal() { ::close(fd_); }
-  Journal(const Journal&) = delete;
-  Journal& operator=(const Journal&) = delete;
-
-  /// Syncs `record["files"]` and the directory, then appends `record` as one
-  /// line and syncs the journal. Thread-safe.
-  void append(const json& record) {
-    for (const json& f : record["files"]) syncPath(f.get<std::string>());
-    syncPath(dir_);
-    const std::string line = record.dump() + "\n";
-    std::lock_guard<std::mutex> lock(mutex_);
-    for (std::size_t done = 0; done < line.size();) {
-      const ssize_t n = ::write(fd_, line.data() + done, line.size() - done);
-      if (n < 0 && errno == EINTR) continue;
-      if (n <= 0) throw InputError(path_ + ": cannot append (" + std::strerror(errno) + ")");
-      done += static_cast<std::size_t>(n);
-    }
-    if (::fsync(fd_) != 0) throw InputError(path_ + ": cannot sync (" + std::strerror(errno) + ")");
-  }
-
- private:
-  std::string dir_;
-  std::string path_;
-  std::mutex mutex_;
-  int fd_ = -1;
-};
 
 void writeSummaries(const BatchSpec& spec, const std::vector<std::string>& fingerprints,
                     const std::vector<JobOutcome>& outcomes) {
