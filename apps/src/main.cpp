@@ -3,9 +3,13 @@
 // "tetblend: error: ..." on stderr with a non-zero exit code:
 // 2 for bad command-line usage, 1 for everything else.
 
+#include <sys/resource.h>
+
 #include <CLI/CLI.hpp>
 #include <cstdio>
+#include <cstdlib>
 #include <exception>
+#include <iostream>
 #include <new>
 #include <string>
 #include <vector>
@@ -40,6 +44,21 @@ int fail(const std::string& message, int code) {
   return code;
 }
 
+// Under an address-space limit (ulimit -v) OpenBLAS's worker threads can be
+// stuck from start-up, retrying forever to map their 128 MB buffers
+// (memory_preflight.h), and OpenBLAS's exit handler waits for them. So with a
+// limit set, the process leaves without exit handlers: every file is complete
+// or absent already (atomic writes) and the standard streams are flushed.
+int finish(int code) {
+  rlimit limit{};
+  if (getrlimit(RLIMIT_AS, &limit) == 0 && limit.rlim_cur != RLIM_INFINITY) {
+    std::cout.flush();
+    std::fflush(nullptr);
+    std::_Exit(code);
+  }
+  return code;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -57,16 +76,17 @@ int main(int argc, char** argv) {
   tetblend::cli::registerAnimate(app);
   tetblend::cli::registerDeform(app);
   tetblend::cli::registerInspect(app);
+  int code = 0;
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    if (e.get_exit_code() == 0) return app.exit(e);  // --help, --version
-    return fail(std::string(e.what()) + " (see 'tetblend --help')", 2);
+    code = e.get_exit_code() == 0 ? app.exit(e)  // --help, --version
+                                  : fail(std::string(e.what()) + " (see 'tetblend --help')", 2);
   } catch (const std::bad_alloc&) {
-    return fail(tetblend::cli::outOfMemoryMessage(std::vector<std::string>(argv + 1, argv + argc)),
+    code = fail(tetblend::cli::outOfMemoryMessage(std::vector<std::string>(argv + 1, argv + argc)),
                 1);
   } catch (const std::exception& e) {
-    return fail(e.what(), 1);
+    code = fail(e.what(), 1);
   }
-  return 0;
+  return finish(code);
 }

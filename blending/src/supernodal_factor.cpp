@@ -5,10 +5,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 #include <vector>
 
 #include "supernodal_kernels.h"
 #include "tetblend/core/error.h"
+#include "tetblend/core/memory_preflight.h"
 
 namespace tetblend {
 namespace stitch_detail {
@@ -23,8 +25,22 @@ using UpdateMatrix = Eigen::Matrix<double, Eigen::Dynamic, 3>;
 constexpr int64_t kParallelEntries = 1 << 15;
 
 // Analyses and factors `view` with CHOLMOD; returns the factor or throws.
+// Between the two, the memory of the peak is checked (memory_preflight.h):
+// CHOLMOD's values (xsize doubles), their copy in SupernodalFactor, and the
+// BLAS buffers.
 cholmod_factor* cholmodFactor(cholmod_sparse& view, cholmod_common& common) {
   cholmod_factor* factor = cholmod_analyze(&view, &common);
+  if (factor != nullptr) {
+    try {
+      requireAllocatable(2 * sizeof(double) * factor->xsize + blasWorkspaceBytes(),
+                         "the stitch's Cholesky factorisation (" + std::to_string(view.nrow) +
+                             " free vertices)");
+    } catch (const ResourceError&) {
+      cholmod_free_factor(&factor, &common);
+      cholmod_finish(&common);
+      throw;
+    }
+  }
   const bool factored = factor != nullptr && cholmod_factorize(&view, factor, &common) &&
                         common.status == CHOLMOD_OK && factor->minor >= factor->n;
   if (!factored || !factor->is_super || !factor->is_ll) {

@@ -5,6 +5,7 @@
 
 #include <cstdint>
 
+#include "address_sanitizer.h"
 #include "apps_test_support.h"
 #include "cli_common.h"
 #include "model_file.h"
@@ -12,19 +13,7 @@
 namespace tetblend::apps_test {
 namespace {
 
-// AddressSanitizer reserves terabytes of shadow address space at start-up,
-// so a run under an address-space limit cannot even begin.
-#if defined(__SANITIZE_ADDRESS__)
-constexpr bool kAddressSanitizer = true;
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-constexpr bool kAddressSanitizer = true;
-#else
-constexpr bool kAddressSanitizer = false;
-#endif
-#else
-constexpr bool kAddressSanitizer = false;
-#endif
+using test::kAddressSanitizer;
 
 class Reliability : public ::testing::Test {
  protected:
@@ -98,6 +87,35 @@ TEST_F(Reliability, OutOfMemoryIsOneLineNamingTheCommandAndInput) {
   EXPECT_EQ(cli::outOfMemoryMessage({"prepare", file("bar_rest.obj"), "-o", file("bar_bend.obj")})
                 .rfind("out of memory in 'tetblend prepare' on " + file("bar_rest.obj") + ": ", 0),
             0u);
+}
+
+// Item 1: under a 128-192 MiB address-space limit `blend` hung: OpenBLAS's
+// worker threads retry forever to map their 128 MB buffers, the
+// factorisation waited for them, and so did the exit. Now the factorisation
+// checks its memory first and the process leaves without waiting.
+TEST_F(Reliability, BlendUnderATightMemoryLimitFailsWithOneLine) {
+  if (kAddressSanitizer)
+    GTEST_SKIP() << "needs an address-space limit, which ASan cannot run under";
+  const fs::path model = prepareBar(dir_);
+  const std::vector<std::string> before = listDir(dir_);
+  // ctest's timeout would catch a hang; `timeout` turns one into exit 124 here.
+  constexpr const char* kHangSeconds = "60";
+  for (const char* kibibytes : {"131072", "196608"}) {
+    const RunResult r = runProgram(
+        "/bin/sh",
+        {"-c", std::string("ulimit -v ") + kibibytes + " && exec timeout " + kHangSeconds +
+                   " \"$0\" \"$@\"",
+         TETBLEND_EXE, "blend", model.string(), "--weights", "0.5,0.2", "-o", file("low.vtu")},
+        dir_);
+    SCOPED_TRACE(kibibytes);
+    expectOneLineError(r);
+    EXPECT_EQ(r.code, 1);
+    EXPECT_TRUE(r.err.find("not enough memory for the stitch's Cholesky factorisation") !=
+                    std::string::npos ||
+                r.err.find("out of memory in 'tetblend blend'") != std::string::npos)
+        << r.err;
+    EXPECT_EQ(listDir(dir_), before);
+  }
 }
 
 // Item 4: `prepare R.obj E.obj -o R.obj` replaced the rest surface, and

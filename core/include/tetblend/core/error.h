@@ -33,4 +33,11 @@ public:
   using Error::Error;
 };
 
+/// The machine lacks a resource the work needs (memory): the message says
+/// how much and what to change.
+class ResourceError : public Error {
+public:
+  using Error::Error;
+};
+
 } // namespace tetblend
