@@ -11,6 +11,8 @@
 #include <Eigen/Geometry>
 #include <Eigen/LU>
 
+#include "tetblend/core/lane_math.h"
+
 namespace tetblend {
 namespace {
 
@@ -22,6 +24,8 @@ constexpr int kMaxHalvings = 40;
 constexpr double kRelativeGradientTolerance = 1e-3;
 // Active tets per TBB task (~0.2 µs of work each).
 constexpr size_t kTetGrain = 1024;
+// Free vertices per TBB task of the gradient gather (~20 corners each).
+constexpr size_t kVertexGrain = 1024;
 // An untangling attempt gives up when this many rounds in a row did not
 // raise the smallest det F: the free region is too small (or the example
 // cannot be embedded), and a larger region or refinement is the remedy.
@@ -50,6 +54,23 @@ class UntangleEnergy {
     for (int t : active_) totalVolume_ += elements[static_cast<size_t>(t)].volume;
     tetEnergy_.resize(active_.size());
     tetGradient_.resize(active_.size());
+    // Each free vertex's (active tet, corner) pairs in ascending tet order.
+    cornerStart_.assign(freeVertices.size() + 1, 0);
+    for (int t : active_) {
+      for (int a = 0; a < 4; ++a) {
+        const int v = variable_[static_cast<size_t>(tets(t, a))];
+        if (v >= 0) ++cornerStart_[static_cast<size_t>(v) + 1];
+      }
+    }
+    for (size_t v = 0; v < freeVertices.size(); ++v) cornerStart_[v + 1] += cornerStart_[v];
+    corners_.resize(static_cast<size_t>(cornerStart_.back()));
+    std::vector<int> next(cornerStart_.begin(), cornerStart_.end() - 1);
+    for (size_t i = 0; i < active_.size(); ++i) {
+      for (int a = 0; a < 4; ++a) {
+        const int v = variable_[static_cast<size_t>(tets(active_[i], a))];
+        if (v >= 0) corners_[static_cast<size_t>(next[static_cast<size_t>(v)]++)] = {i, a};
+      }
+    }
   }
 
   Eigen::VectorXd freeVariables() const {
@@ -67,8 +88,9 @@ class UntangleEnergy {
   }
 
   // Energy at x; the gradient (same size as x) when `gradient` is non-null.
-  // The tets are evaluated in parallel into per-tet slots, then summed and
-  // scattered in tet order: the same result for any thread count.
+  // The tets are evaluated in parallel into per-tet slots, then summed in tet
+  // order and gathered per free vertex in tet order: the same result for any
+  // thread count.
   double evaluate(const Eigen::VectorXd& x, double epsilon, Eigen::VectorXd* gradient) {
     setFreeVariables(x);
     const bool wantGradient = gradient != nullptr;
@@ -81,14 +103,18 @@ class UntangleEnergy {
     double energy = 0.0;
     for (double e : tetEnergy_) energy += e;
     if (!wantGradient) return energy;
-    gradient->setZero(x.size());
-    for (size_t i = 0; i < active_.size(); ++i) {
-      const Eigen::RowVector4i tet = tets_.row(active_[i]);
-      for (int a = 0; a < 4; ++a) {
-        const int v = variable_[static_cast<size_t>(tet(a))];
-        if (v >= 0) gradient->segment<3>(3 * v) += tetGradient_[i].col(a);
-      }
-    }
+    gradient->resize(x.size());
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, freeVertices_.size(), kVertexGrain),
+                      [&](const tbb::blocked_range<size_t>& range) {
+                        for (size_t v = range.begin(); v != range.end(); ++v) {
+                          Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+                          for (int k = cornerStart_[v]; k < cornerStart_[v + 1]; ++k) {
+                            const Corner& c = corners_[static_cast<size_t>(k)];
+                            sum += tetGradient_[c.activeTet].col(c.corner);
+                          }
+                          gradient->segment<3>(3 * static_cast<Eigen::Index>(v)) = sum;
+                        }
+                      });
     return energy;
   }
 
@@ -119,8 +145,9 @@ class UntangleEnergy {
     const double chi = j > 0.0 ? 0.5 * (j + root) : 0.5 * epsilon * epsilon / (root - j);
     const double dChi = chi / root;
     const double frobenius = f.squaredNorm();
-    const double cubeRoot = std::cbrt(chi);
-    const double chiPow = 1.0 / (cubeRoot * cubeRoot);
+    const double chiPow = chi >= std::numeric_limits<double>::min()
+                              ? lane_math::inverseCbrtSquaredLane(chi)
+                              : std::pow(chi, -2.0 / 3.0);
     const double weight = element.volume / totalVolume_;
     tetEnergy_[i] =
         weight * ((1 - kVolumeWeight) * frobenius * chiPow + kVolumeWeight * (j * j + 1) / chi);
@@ -135,6 +162,11 @@ class UntangleEnergy {
     tetGradient_[i] = dEdF * element.gradients;
   }
 
+  struct Corner {
+    size_t activeTet;  // index into active_
+    int corner;        // 0..3
+  };
+
   const Tets& tets_;
   const std::vector<TetElement>& elements_;
   const std::vector<int>& freeVertices_;
@@ -143,6 +175,8 @@ class UntangleEnergy {
   std::vector<int> active_;
   std::vector<double> tetEnergy_;                         // per active tet
   std::vector<Eigen::Matrix<double, 3, 4>> tetGradient_;  // per active tet
+  std::vector<int> cornerStart_;  // per free vertex: its range in corners_
+  std::vector<Corner> corners_;
   double totalVolume_ = 0.0;
 };
 
