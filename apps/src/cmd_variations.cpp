@@ -5,12 +5,13 @@
 #include <cstdio>
 #include <memory>
 
+#include "blend_options.h"
 #include "blend_series.h"
-#include "blend_setup.h"
 #include "cli_common.h"
 #include "commands.h"
-#include "parameter_pca.h"
 #include "tetblend/core/error.h"
+#include "tetblend/pipeline/make_blender.h"
+#include "tetblend/pipeline/parameter_pca.h"
 #include "weight_sampling.h"
 
 namespace tetblend::cli {

@@ -8,9 +8,9 @@
 #include <fstream>
 #include <iterator>
 
-#include "model_file.h"
-#include "parameter_pca.h"
 #include "tetblend/core/error.h"
+#include "tetblend/pipeline/model_file.h"
+#include "tetblend/pipeline/parameter_pca.h"
 #include "weight_sampling.h"
 #include "weight_spline.h"
 

@@ -21,7 +21,7 @@
 #include "tetblend/core/kaji_ochiai.h"
 #include "tetblend/core/mesh_types.h"
 
-namespace tetblend::cli {
+namespace tetblend {
 
 /// One handle: its transform as parameters (phi(params) is its matrix) and
 /// the centre used by distance weights.
@@ -65,4 +65,4 @@ Eigen::MatrixXd distanceWeights(const Vertices& vertices, const std::vector<Hand
 Vertices deformByHandles(const Vertices& vertices, const std::vector<Handle>& handles,
                          const Eigen::MatrixXd& weights, HandleBlend method);
 
-}  // namespace tetblend::cli
+}  // namespace tetblend

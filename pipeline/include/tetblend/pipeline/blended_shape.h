@@ -7,12 +7,12 @@
 #include <utility>
 #include <vector>
 
-#include "model_file.h"
 #include "tetblend/blending/quality.h"
 #include "tetblend/blending/shape_blender.h"
 #include "tetblend/meshing/mesh_data_arrays.h"
+#include "tetblend/pipeline/model_file.h"
 
-namespace tetblend::cli {
+namespace tetblend {
 
 /// A blended shape with its quality.
 struct BlendedShape {
@@ -42,4 +42,4 @@ BlendedShape blendShape(const ShapeBlender& blender, const ModelData& model,
 /// the flat and inverted tets apart.
 std::vector<std::pair<std::string, double>> qualityColumns(const QualitySummary& quality);
 
-}  // namespace tetblend::cli
+}  // namespace tetblend

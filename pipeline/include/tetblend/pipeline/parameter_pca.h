@@ -23,7 +23,7 @@
 
 #include "tetblend/core/mesh_types.h"
 
-namespace tetblend::cli {
+namespace tetblend {
 
 /// Principal components of the rest and its examples, as weight vectors.
 struct ParameterPca {
@@ -46,4 +46,4 @@ Eigen::VectorXd kajiParameterVector(const TetMesh& rest, const Vertices& example
 /// 1e-12 times the largest are dropped (they are round-off).
 ParameterPca parameterPca(const std::vector<Eigen::VectorXd>& exampleParameters);
 
-}  // namespace tetblend::cli
+}  // namespace tetblend

@@ -1,4 +1,4 @@
-#include "parameter_pca.h"
+#include "tetblend/pipeline/parameter_pca.h"
 
 #include <Eigen/Eigenvalues>
 #include <cmath>
@@ -9,7 +9,7 @@
 #include "tetblend/core/error.h"
 #include "tetblend/core/polar.h"
 
-namespace tetblend::cli {
+namespace tetblend {
 
 namespace {
 // Relative variance below which a principal component is round-off: the
@@ -72,4 +72,4 @@ ParameterPca parameterPca(const std::vector<Eigen::VectorXd>& exampleParameters)
   return pca;
 }
 
-}  // namespace tetblend::cli
+}  // namespace tetblend

@@ -1,12 +1,12 @@
-#include "blended_shape.h"
+#include "tetblend/pipeline/blended_shape.h"
 
 #include <cmath>
 #include <limits>
 
-#include "cli_common.h"
 #include "tetblend/core/error.h"
+#include "tetblend/pipeline/format_number.h"
 
-namespace tetblend::cli {
+namespace tetblend {
 
 namespace {
 
@@ -92,4 +92,4 @@ std::vector<std::pair<std::string, double>> qualityColumns(const QualitySummary&
   return finite;
 }
 
-}  // namespace tetblend::cli
+}  // namespace tetblend

@@ -1,4 +1,4 @@
-#include "handle_deformer.h"
+#include "tetblend/pipeline/handle_deformer.h"
 
 #include <cmath>
 #include <fstream>
@@ -8,7 +8,7 @@
 #include "tetblend/core/error.h"
 #include "tetblend/core/tet_geometry.h"
 
-namespace tetblend::cli {
+namespace tetblend {
 
 namespace {
 
@@ -163,4 +163,4 @@ Vertices deformByHandles(const Vertices& vertices, const std::vector<Handle>& ha
   return out;
 }
 
-}  // namespace tetblend::cli
+}  // namespace tetblend

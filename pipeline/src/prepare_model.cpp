@@ -1,11 +1,9 @@
-#include "prepare_pipeline.h"
+#include "tetblend/pipeline/prepare_model.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 
-#include "cli_common.h"
-#include "progress.h"
 #include "tetblend/core/error.h"
 #include "tetblend/core/tet_geometry.h"
 #include "tetblend/meshing/example_aware_tets.h"
@@ -13,12 +11,17 @@
 #include "tetblend/meshing/surface_validation.h"
 #include "tetblend/meshing/tetgen_mesher.h"
 #include "tetblend/meshing/tetrisation.h"
+#include "tetblend/pipeline/format_number.h"
 
-namespace tetblend::cli {
+namespace tetblend {
 namespace {
 
 void say(const std::function<void(const std::string&)>& sink, const std::string& line) {
   if (sink) sink(line);
+}
+
+void advance(const PrepareMessages& messages, std::size_t steps) {
+  if (messages.step) messages.step(steps);
 }
 
 // "1.34 M" / "134 k" / "950": a tet count people read at a glance.
@@ -59,39 +62,18 @@ double worstVolumeRatio(const TetMesh& rest, const CompatibleTetResult& placed) 
 
 }  // namespace
 
-void addPrepareOptions(CLI::App& command, PrepareSettings& settings) {
-  command
-      .add_option("--quality", settings.radiusEdgeRatio,
-                  "TetGen quality bound: max circumradius / shortest edge of a tet (> 1; 0 = no "
-                  "refinement)")
-      ->capture_default_str();
-  command
-      .add_option("--max-volume", settings.maxVolume,
-                  "TetGen volume bound per tet, in mesh units cubed (default: none; the quality "
-                  "bound grades the interior from the surface inwards, and the examples refine "
-                  "it where they need it)")
-      ->check(CLI::NonNegativeNumber);
-  command.add_flag("--tetrise", settings.tetrise,
-                   "one tet per surface triangle (apex along the normal) instead of TetGen: for "
-                   "open or non-watertight surfaces (default: off)");
-  command.add_flag("--strict", settings.strict,
-                   "refuse an example whose surface folds or intersects itself so that some tets "
-                   "cannot be embedded (default: off; such tets are reported and left out of the "
-                   "stitch)");
-  addThreadsOption(command, settings.threads);
-}
+std::size_t prepareStepCount(std::size_t exampleCount) { return exampleCount + 2; }
 
 ModelData prepareModel(const std::string& restPath, const std::vector<std::string>& examplePaths,
-                       const PrepareSettings& settings, const PrepareMessages& messages) {
+                       const PrepareOptions& options, const PrepareMessages& messages) {
   if (examplePaths.empty()) throw InputError("give at least one example surface");
-  if (settings.radiusEdgeRatio != 0.0 && !(settings.radiusEdgeRatio > 1.0)) {
+  if (options.radiusEdgeRatio != 0.0 && !(options.radiusEdgeRatio > 1.0)) {
     throw InputError("--quality must be 0 or greater than 1, got " +
-                     formatNumber(settings.radiusEdgeRatio));
+                     formatNumber(options.radiusEdgeRatio));
   }
-  ProgressBar progress("prepare", examplePaths.size() + 2, settings.quiet);
   const SurfaceMesh rest = readSurface(restPath);
   SurfaceValidationOptions validation;
-  validation.requireClosed = !settings.tetrise;
+  validation.requireClosed = !options.tetrise;
   requireValidRest(rest, restPath, validation);
   std::vector<SurfaceMesh> examples;
   for (const std::string& path : examplePaths) {
@@ -102,26 +84,26 @@ ModelData prepareModel(const std::string& restPath, const std::vector<std::strin
                                 "): blending this example changes nothing");
     }
   }
-  progress.advance();
+  advance(messages, 1);
 
   ModelData model;
   model.surfaceTriangles = rest.triangles;
   model.surfaceVertexCount = static_cast<int>(rest.vertices.rows());
   model.restSource = restPath;
   model.exampleSources = examplePaths;
-  if (settings.tetrise) {
+  if (options.tetrise) {
     std::vector<TetMesh> meshes = tetriseCompatible(rest, examples, examplePaths);
     model.rest = std::move(meshes.front());
     for (std::size_t k = 1; k < meshes.size(); ++k) model.examples.push_back(meshes[k].vertices);
-    progress.advance(examplePaths.size() + 1);
+    advance(messages, examplePaths.size() + 1);
     return model;
   }
   TetGenOptions tetgen;
-  tetgen.maxRadiusEdgeRatio = settings.radiusEdgeRatio;
-  tetgen.maxTetVolume = settings.maxVolume.value_or(0.0);
+  tetgen.maxRadiusEdgeRatio = options.radiusEdgeRatio;
+  tetgen.maxTetVolume = options.maxVolume.value_or(0.0);
   tetgen.sourceName = restPath;
   const TetMesh tets = tetrahedralize(rest, tetgen);
-  progress.advance();
+  advance(messages, 1);
   if (tets.tets.rows() > kLargeMeshWarningTets) {
     say(messages.warning, restPath + ": " + roughCount(tets.tets.rows()) +
                               " tets; preparing and each blend need " + "about " +
@@ -132,7 +114,7 @@ ModelData prepareModel(const std::string& restPath, const std::vector<std::strin
   for (const SurfaceMesh& example : examples) surfaces.push_back(example.vertices);
   CompatibleTetMeshes built = buildCompatibleTetMeshes(
       tets, model.surfaceVertexCount, surfaces, ExampleAwareOptions{}, [&](const char* stage) {
-        if (std::string(stage) == "place") progress.advance();
+        if (std::string(stage) == "place") advance(messages, 1);
       });
   model.rest = std::move(built.rest);
   for (std::size_t k = 0; k < examples.size(); ++k) {
@@ -143,7 +125,7 @@ ModelData prepareModel(const std::string& restPath, const std::vector<std::strin
                                threeDigits(worstVolumeRatio(model.rest, placed)) + ", first tet " +
                                std::to_string(placed.invertedTets.front()) + "); " +
                                diagnosis(built.selfIntersections[k]);
-      if (settings.strict) {
+      if (options.strict) {
         throw InputError(what + ": leave out --strict to exclude those tets from the stitch");
       }
       say(messages.warning, what + ": they are left out of the stitch of every blend");
@@ -164,4 +146,4 @@ ModelData prepareModel(const std::string& restPath, const std::vector<std::strin
   return model;
 }
 
-}  // namespace tetblend::cli
+}  // namespace tetblend
