@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include "tetblend/core/dual_quaternion.h"
+#include "tetblend/core/dual_quaternion_blend.h"
 #include "tetblend/core/error.h"
 #include "tetblend/core/tet_geometry.h"
 
@@ -139,14 +140,11 @@ Vertices deformByHandles(const Vertices& vertices, const std::vector<Handle>& ha
     const Eigen::Vector3d u = vertices.row(v).transpose();
     Eigen::Vector3d p;
     if (method == HandleBlend::kDqs) {
-      // DLB (Kavan et al. eq. (4)): signs aligned with the first handle
-      // (shortest path), weighted sum, normalised.
-      DualQuaternion sum = dqs[0] * 0.0;
-      for (std::size_t i = 0; i < dqs.size(); ++i) {
-        const double sign = dqs[i].real().coeffs().dot(dqs[0].real().coeffs()) < 0 ? -1.0 : 1.0;
-        sum = sum + dqs[i] * (sign * w[i]);
+      try {
+        p = dlb(dqs.data(), w.data(), static_cast<int>(dqs.size())).transformPoint(u);
+      } catch (const DomainError& e) {
+        throw DomainError("vertex " + std::to_string(v) + ": " + e.what());
       }
-      p = sum.normalized().transformPoint(u);
     } else {
       Eigen::Matrix4d a = Eigen::Matrix4d::Zero();
       if (method == HandleBlend::kLbs) {
