@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <fstream>
+#include <iterator>
 #include <nlohmann/json.hpp>
 
 #include "tetblend/core/dual_quaternion.h"
@@ -63,14 +64,12 @@ HandleBlend parseHandleBlend(const std::string& name) {
   throw InputError("--method: unknown deformer '" + name + "'; use lbs, dqs, kaji or kaji-frechet");
 }
 
-HandleSpec readHandleSpec(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError(path + ": cannot open the handle file");
+HandleSpec parseHandleSpec(const std::string& text, const std::string& what) {
   HandleSpec spec;
   try {
-    const json j = json::parse(in);
+    const json j = json::parse(text);
     if (!j.contains("handles") || !j["handles"].is_array() || j["handles"].empty()) {
-      throw InputError(path + ": needs a non-empty \"handles\" array");
+      throw InputError("needs a non-empty \"handles\" array");
     }
     for (std::size_t i = 0; i < j["handles"].size(); ++i)
       spec.handles.push_back(parseHandle(j["handles"][i], "handles[" + std::to_string(i) + "]"));
@@ -80,19 +79,26 @@ HandleSpec readHandleSpec(const std::string& path) {
       spec.weights.resize(static_cast<Eigen::Index>(w.size()), n);
       for (std::size_t v = 0; v < w.size(); ++v) {
         if (!w[v].is_array() || static_cast<Eigen::Index>(w[v].size()) != n)
-          throw InputError(path + ": weights[" + std::to_string(v) + "] needs " +
-                           std::to_string(n) + " numbers, one per handle");
+          throw InputError("weights[" + std::to_string(v) + "] needs " + std::to_string(n) +
+                           " numbers, one per handle");
         for (Eigen::Index i = 0; i < n; ++i)
           spec.weights(static_cast<Eigen::Index>(v), i) =
               w[v][static_cast<std::size_t>(i)].get<double>();
       }
     }
   } catch (const json::exception& e) {
-    throw InputError(path + ": bad handle JSON (" + e.what() + ")");
+    throw InputError(what + ": bad handle JSON (" + e.what() + ")");
   } catch (const InputError& e) {
-    throw InputError(path + ": " + e.what());
+    throw InputError(what + ": " + e.what());
   }
   return spec;
+}
+
+HandleSpec readHandleSpec(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw InputError(path + ": cannot open the handle file");
+  const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  return parseHandleSpec(text, path);
 }
 
 Eigen::MatrixXd distanceWeights(const Vertices& vertices, const std::vector<Handle>& handles,

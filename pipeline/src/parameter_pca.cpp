@@ -8,6 +8,7 @@
 #include "tetblend/blending/tet_maps.h"
 #include "tetblend/core/error.h"
 #include "tetblend/core/polar.h"
+#include "tetblend/pipeline/make_blender.h"
 
 namespace tetblend {
 
@@ -70,6 +71,15 @@ ParameterPca parameterPca(const std::vector<Eigen::VectorXd>& exampleParameters)
     pca.steps.push_back(eig.eigenvectors().col(i).tail(n) / std::sqrt(static_cast<double>(n + 1)));
   }
   return pca;
+}
+
+ParameterPca modelPca(const ModelData& model, bool consistent) {
+  const TetMesh stitched = stitchedMesh(model);
+  std::vector<Eigen::VectorXd> params;
+  for (const Vertices& example : model.examples) {
+    params.push_back(kajiParameterVector(stitched, example, consistent));
+  }
+  return parameterPca(params);
 }
 
 }  // namespace tetblend

@@ -60,27 +60,43 @@ double worstVolumeRatio(const TetMesh& rest, const CompatibleTetResult& placed) 
   return worst;
 }
 
+// The checks that need no surface: examples given, a valid quality bound.
+void checkPrepareArguments(std::size_t exampleCount, const PrepareOptions& options) {
+  if (exampleCount == 0) throw InputError("give at least one example surface");
+  if (options.radiusEdgeRatio != 0.0 && !(options.radiusEdgeRatio > 1.0)) {
+    throw InputError("--quality must be 0 or greater than 1, got " +
+                     formatNumber(options.radiusEdgeRatio));
+  }
+}
+
 }  // namespace
 
 std::size_t prepareStepCount(std::size_t exampleCount) { return exampleCount + 2; }
 
 ModelData prepareModel(const std::string& restPath, const std::vector<std::string>& examplePaths,
                        const PrepareOptions& options, const PrepareMessages& messages) {
-  if (examplePaths.empty()) throw InputError("give at least one example surface");
-  if (options.radiusEdgeRatio != 0.0 && !(options.radiusEdgeRatio > 1.0)) {
-    throw InputError("--quality must be 0 or greater than 1, got " +
-                     formatNumber(options.radiusEdgeRatio));
-  }
+  checkPrepareArguments(examplePaths.size(), options);
   const SurfaceMesh rest = readSurface(restPath);
+  std::vector<SurfaceMesh> examples;
+  for (const std::string& path : examplePaths) examples.push_back(readSurface(path));
+  return prepareModel(rest, examples, restPath, examplePaths, options, messages);
+}
+
+ModelData prepareModel(const SurfaceMesh& rest, const std::vector<SurfaceMesh>& examples,
+                       const std::string& restName, const std::vector<std::string>& exampleNames,
+                       const PrepareOptions& options, const PrepareMessages& messages) {
+  checkPrepareArguments(examples.size(), options);
+  if (exampleNames.size() != examples.size()) {
+    throw InputError("prepare: " + std::to_string(exampleNames.size()) + " names given for " +
+                     std::to_string(examples.size()) + " examples");
+  }
   SurfaceValidationOptions validation;
   validation.requireClosed = !options.tetrise;
-  requireValidRest(rest, restPath, validation);
-  std::vector<SurfaceMesh> examples;
-  for (const std::string& path : examplePaths) {
-    examples.push_back(readSurface(path));
-    requireCompatibleExample(rest, examples.back(), path);
-    if (examples.back().vertices == rest.vertices) {
-      say(messages.warning, path + ": every vertex equals the rest's (" + restPath +
+  requireValidRest(rest, restName, validation);
+  for (std::size_t k = 0; k < examples.size(); ++k) {
+    requireCompatibleExample(rest, examples[k], exampleNames[k]);
+    if (examples[k].vertices == rest.vertices) {
+      say(messages.warning, exampleNames[k] + ": every vertex equals the rest's (" + restName +
                                 "): blending this example changes nothing");
     }
   }
@@ -89,23 +105,23 @@ ModelData prepareModel(const std::string& restPath, const std::vector<std::strin
   ModelData model;
   model.surfaceTriangles = rest.triangles;
   model.surfaceVertexCount = static_cast<int>(rest.vertices.rows());
-  model.restSource = restPath;
-  model.exampleSources = examplePaths;
+  model.restSource = restName;
+  model.exampleSources = exampleNames;
   if (options.tetrise) {
-    std::vector<TetMesh> meshes = tetriseCompatible(rest, examples, examplePaths);
+    std::vector<TetMesh> meshes = tetriseCompatible(rest, examples, exampleNames);
     model.rest = std::move(meshes.front());
     for (std::size_t k = 1; k < meshes.size(); ++k) model.examples.push_back(meshes[k].vertices);
-    advance(messages, examplePaths.size() + 1);
+    advance(messages, exampleNames.size() + 1);
     return model;
   }
   TetGenOptions tetgen;
   tetgen.maxRadiusEdgeRatio = options.radiusEdgeRatio;
   tetgen.maxTetVolume = options.maxVolume.value_or(0.0);
-  tetgen.sourceName = restPath;
+  tetgen.sourceName = restName;
   const TetMesh tets = tetrahedralize(rest, tetgen);
   advance(messages, 1);
   if (tets.tets.rows() > kLargeMeshWarningTets) {
-    say(messages.warning, restPath + ": " + roughCount(tets.tets.rows()) +
+    say(messages.warning, restName + ": " + roughCount(tets.tets.rows()) +
                               " tets; preparing and each blend need " + "about " +
                               formatNumber(std::round(tets.tets.rows() / 1e5) / 10) +
                               " GB of memory (a coarser mesh: a larger --quality, e.g. 3)");
@@ -120,7 +136,7 @@ ModelData prepareModel(const std::string& restPath, const std::vector<std::strin
   for (std::size_t k = 0; k < examples.size(); ++k) {
     CompatibleTetResult& placed = built.examples[k];
     if (!placed.invertedTets.empty()) {
-      const std::string what = examplePaths[k] + ": " + std::to_string(placed.invertedTets.size()) +
+      const std::string what = exampleNames[k] + ": " + std::to_string(placed.invertedTets.size()) +
                                " tets cannot be embedded (worst volume ratio " +
                                threeDigits(worstVolumeRatio(model.rest, placed)) + ", first tet " +
                                std::to_string(placed.invertedTets.front()) + "); " +
@@ -137,7 +153,7 @@ ModelData prepareModel(const std::string& restPath, const std::vector<std::strin
   std::sort(model.excludedTets.begin(), model.excludedTets.end());
   model.excludedTets.erase(std::unique(model.excludedTets.begin(), model.excludedTets.end()),
                            model.excludedTets.end());
-  say(messages.note, restPath + ": " + roughCount(model.rest.tets.rows()) + " tets, " +
+  say(messages.note, restName + ": " + roughCount(model.rest.tets.rows()) + " tets, " +
                          std::to_string(model.rest.vertices.rows()) + " vertices (" +
                          std::to_string(built.steinerPoints) +
                          " Steiner points added for the examples in " +

@@ -11,7 +11,7 @@
 #include "tetblend/core/error.h"
 #include "tetblend/pipeline/model_file.h"
 #include "tetblend/pipeline/parameter_pca.h"
-#include "weight_sampling.h"
+#include "tetblend/pipeline/weight_sampling.h"
 #include "weight_spline.h"
 
 namespace tetblend::cli {

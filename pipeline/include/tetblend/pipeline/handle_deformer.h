@@ -54,7 +54,12 @@ struct HandleSpec {
   Eigen::MatrixXd weights;  ///< #V by n, or empty when not given
 };
 
-/// Reads `path`; InputError naming the file and the entry at fault.
+/// The spec in JSON `text`; InputError naming `what` (a file name) and the
+/// entry at fault.
+HandleSpec parseHandleSpec(const std::string& text, const std::string& what);
+
+/// Reads `path` (parseHandleSpec); InputError naming the file and the entry
+/// at fault.
 HandleSpec readHandleSpec(const std::string& path);
 
 /// Distance weights (see the file comment), #V by n, rows summing to 1.

@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "tetblend/core/mesh_types.h"
+#include "tetblend/pipeline/model_file.h"
 
 namespace tetblend {
 
@@ -45,5 +46,9 @@ Eigen::VectorXd kajiParameterVector(const TetMesh& rest, const Vertices& example
 /// (n >= 1 vectors of one length). Components with a variance below
 /// 1e-12 times the largest are dropped (they are round-off).
 ParameterPca parameterPca(const std::vector<Eigen::VectorXd>& exampleParameters);
+
+/// The PCA of a model: parameterPca of its examples' kajiParameterVector over
+/// stitchedMesh(model) (excluded tets have no parameters).
+ParameterPca modelPca(const ModelData& model, bool consistent);
 
 }  // namespace tetblend

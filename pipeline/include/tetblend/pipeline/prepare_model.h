@@ -1,9 +1,9 @@
 #pragma once
-// From surface files to a model: validate the rest and the examples, make the
-// rest tet mesh (TetGen, or per-face tetrisation), and place the interior
-// vertices of each example so every example shares the rest's tets. Used by
-// `tetblend prepare` (which saves the result), by `tetblend blend --rest`
-// (which blends it directly) and by the Python module.
+// From surface files (or surfaces in memory) to a model: validate the rest
+// and the examples, make the rest tet mesh (TetGen, or per-face tetrisation),
+// and place the interior vertices of each example so every example shares the
+// rest's tets. Used by `tetblend prepare` (which saves the result), by
+// `tetblend blend --rest` (which blends it directly) and by the Python module.
 
 #include <cstddef>
 #include <functional>
@@ -52,14 +52,21 @@ std::size_t prepareStepCount(std::size_t exampleCount);
 constexpr long long kLargeMeshWarningTets = 1000000;
 
 /// Builds the model of `restPath` and `examplePaths` (surface files with the
-/// same triangles). Tets that an example inverts whatever the placement (its
-/// surface folds or intersects itself) become the model's excluded tets, with
-/// one warning per such example; options.strict refuses them instead.
-/// An example equal to the rest is warned about, and so is a rest mesh above
-/// kLargeMeshWarningTets before the long steps start; a note gives the tet
-/// count and the Steiner points added. Throws InputError naming the file and
-/// the problem.
+/// same triangles, all read before any is validated). Tets that an example inverts whatever the
+/// placement (its surface folds or intersects itself) become the model's excluded tets, with one
+/// warning per such example; options.strict refuses them instead. An example equal to the rest is
+/// warned about, and so is a rest mesh above kLargeMeshWarningTets before the long steps start; a
+/// note gives the tet count and the Steiner points added. Throws InputError naming the file and the
+/// problem.
 ModelData prepareModel(const std::string& restPath, const std::vector<std::string>& examplePaths,
+                       const PrepareOptions& options, const PrepareMessages& messages = {});
+
+/// As above, from surfaces in memory (the Python module's prepare): `rest`
+/// and `examples` (the rest's triangles, #V by 3 positions each), with
+/// `restName` and `exampleNames` (one per example) standing for the file
+/// names in messages and in the model's sources.
+ModelData prepareModel(const SurfaceMesh& rest, const std::vector<SurfaceMesh>& examples,
+                       const std::string& restName, const std::vector<std::string>& exampleNames,
                        const PrepareOptions& options, const PrepareMessages& messages = {});
 
 }  // namespace tetblend

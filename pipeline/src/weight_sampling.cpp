@@ -1,11 +1,11 @@
-#include "weight_sampling.h"
+#include "tetblend/pipeline/weight_sampling.h"
 
 #include <cmath>
 #include <random>
 
 #include "tetblend/core/error.h"
 
-namespace tetblend::cli {
+namespace tetblend {
 
 std::vector<std::vector<double>> sampleSimplexWeights(int count, int exampleCount,
                                                       std::uint64_t seed, double extrapolate) {
@@ -39,4 +39,4 @@ std::vector<std::vector<double>> sampleSimplexWeights(int count, int exampleCoun
   return out;
 }
 
-}  // namespace tetblend::cli
+}  // namespace tetblend
