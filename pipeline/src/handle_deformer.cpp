@@ -61,7 +61,7 @@ HandleBlend parseHandleBlend(const std::string& name) {
   if (name == "dqs") return HandleBlend::kDqs;
   if (name == "kaji") return HandleBlend::kKaji;
   if (name == "kaji-frechet") return HandleBlend::kKajiFrechet;
-  throw InputError("--method: unknown deformer '" + name + "'; use lbs, dqs, kaji or kaji-frechet");
+  throw InputError("method: unknown deformer '" + name + "'; use lbs, dqs, kaji or kaji-frechet");
 }
 
 HandleSpec parseHandleSpec(const std::string& text, const std::string& what) {
@@ -103,7 +103,7 @@ HandleSpec readHandleSpec(const std::string& path) {
 
 Eigen::MatrixXd distanceWeights(const Vertices& vertices, const std::vector<Handle>& handles,
                                 double falloff) {
-  if (!(falloff > 0.0)) throw InputError("--falloff must be > 0");
+  if (!(falloff > 0.0)) throw InputError("falloff must be > 0");
   const double delta = kDistanceOffset * std::max(boundingBoxDiagonal(vertices), 1e-300);
   Eigen::MatrixXd w(vertices.rows(), static_cast<Eigen::Index>(handles.size()));
   for (Eigen::Index v = 0; v < vertices.rows(); ++v) {

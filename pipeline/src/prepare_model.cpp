@@ -64,7 +64,7 @@ double worstVolumeRatio(const TetMesh& rest, const CompatibleTetResult& placed) 
 void checkPrepareArguments(std::size_t exampleCount, const PrepareOptions& options) {
   if (exampleCount == 0) throw InputError("give at least one example surface");
   if (options.radiusEdgeRatio != 0.0 && !(options.radiusEdgeRatio > 1.0)) {
-    throw InputError("--quality must be 0 or greater than 1, got " +
+    throw InputError("quality must be 0 or greater than 1, got " +
                      formatNumber(options.radiusEdgeRatio));
   }
 }

@@ -9,10 +9,10 @@ namespace tetblend {
 
 std::vector<std::vector<double>> sampleSimplexWeights(int count, int exampleCount,
                                                       std::uint64_t seed, double extrapolate) {
-  if (count < 0) throw InputError("--count must be >= 0, got " + std::to_string(count));
+  if (count < 0) throw InputError("count must be >= 0, got " + std::to_string(count));
   if (exampleCount < 1) throw InputError("the model has no example shape to vary");
   if (!(extrapolate >= 0.0)) {
-    throw InputError("--extrapolate must be >= 0, got " + std::to_string(extrapolate));
+    throw InputError("extrapolate must be >= 0, got " + std::to_string(extrapolate));
   }
   std::mt19937_64 engine(seed);
   const auto uniformOpen = [&engine]() {

@@ -90,3 +90,12 @@ def test_a_missing_file_is_an_input_error_naming_it(tmp_path):
         tetblend.load(missing)
     with pytest.raises(tetblend.InputError, match="missing.obj"):
         tetblend.read_surface(str(tmp_path / "missing.obj"))
+
+
+def test_bad_options_are_input_errors_naming_the_keyword(model):
+    with pytest.raises(tetblend.InputError, match="quality must be 0 or greater than 1, got 0.5"):
+        tetblend.prepare(REST, TRIANGLES, [EXAMPLE], quality=0.5)
+    with pytest.raises(tetblend.InputError, match="count must be >= 0, got -1"):
+        model.variations(-1)
+    with pytest.raises(tetblend.InputError, match="falloff must be > 0"):
+        tetblend.deform(REST, [{"centre": [0, 0, 0]}], falloff=0.0)
