@@ -6,7 +6,6 @@
 
 #include "bindings.h"
 #include "numpy_arrays.h"
-#include "tetblend/core/error.h"
 #include "tetblend/pipeline/handle_deformer.h"
 
 namespace py = pybind11;
