@@ -9,6 +9,8 @@ packages=(
   libeigen3-dev libcgal-dev libtet1.5-dev libsuitesparse-dev libceres-dev
   libvtk9-dev libcli11-dev nlohmann-json3-dev libtbb-dev
   libgtest-dev libgmock-dev libbenchmark-dev
+  # The Python module and its tests, for Debian's /usr/bin/python3.
+  pybind11-dev python3-dev python3-numpy python3-pytest
   libcgal-demo  # closed test meshes: data.tar.gz with data/meshes/*.off
   # Multithreaded BLAS for CHOLMOD's supernodal factorisations (becomes the
   # libblas.so.3 alternative): the 1M-tet compatible-mesh factorisation takes

@@ -6,9 +6,9 @@
 #include <string>
 #include <vector>
 
-#include "model_file.h"
 #include "tetblend/core/mesh_types.h"
 #include "tetblend/meshing/mesh_data_arrays.h"
+#include "tetblend/pipeline/model_file.h"
 
 namespace tetblend::cli {
 

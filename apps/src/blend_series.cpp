@@ -5,12 +5,14 @@
 #include <sstream>
 
 #include "blend_output.h"
-#include "blended_shape.h"
 #include "cli_common.h"
 #include "progress.h"
 #include "tetblend/core/error.h"
 #include "tetblend/meshing/atomic_file.h"
 #include "tetblend/meshing/pvd_collection.h"
+#include "tetblend/pipeline/blended_shape.h"
+#include "tetblend/pipeline/format_number.h"
+#include "tetblend/pipeline/make_blender.h"
 
 namespace tetblend::cli {
 

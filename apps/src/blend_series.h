@@ -5,8 +5,8 @@
 #include <string>
 #include <vector>
 
-#include "blend_setup.h"
-#include "model_file.h"
+#include "blend_options.h"
+#include "tetblend/pipeline/model_file.h"
 
 namespace tetblend::cli {
 

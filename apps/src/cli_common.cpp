@@ -146,12 +146,6 @@ std::string outOfMemoryMessage(const std::vector<std::string>& args) {
          ": an input is damaged (a wrong count) or too large for this machine";
 }
 
-std::string formatNumber(double value) {
-  char buffer[32];
-  const auto [end, ec] = std::to_chars(buffer, buffer + sizeof buffer, value);
-  return ec == std::errc() ? std::string(buffer, end) : std::string("nan");
-}
-
 void printWarning(const std::string& line) {
   std::fprintf(stderr, "tetblend: warning: %s\n", line.c_str());
 }

@@ -74,7 +74,4 @@ void printWarning(const std::string& line);
 /// Prints "tetblend: <line>" on stderr unless `quiet`.
 void printNote(const std::string& line, bool quiet);
 
-/// Formats a double in shortest round-trip form (for names and tables).
-std::string formatNumber(double value);
-
 }  // namespace tetblend::cli

@@ -35,15 +35,17 @@
 
 #include "batch_journal.h"
 #include "batch_spec.h"
+#include "blend_options.h"
 #include "blend_output.h"
-#include "blend_setup.h"
-#include "blended_shape.h"
 #include "cli_common.h"
 #include "commands.h"
 #include "progress.h"
 #include "tetblend/core/error.h"
 #include "tetblend/meshing/atomic_file.h"
 #include "tetblend/meshing/pvd_collection.h"
+#include "tetblend/pipeline/blended_shape.h"
+#include "tetblend/pipeline/format_number.h"
+#include "tetblend/pipeline/make_blender.h"
 
 namespace tetblend::cli {
 

@@ -3,14 +3,15 @@
 
 #include <memory>
 
+#include "blend_options.h"
 #include "blend_output.h"
-#include "blend_setup.h"
-#include "blended_shape.h"
 #include "cli_common.h"
 #include "commands.h"
-#include "prepare_pipeline.h"
+#include "prepare_options.h"
 #include "progress.h"
 #include "tetblend/core/error.h"
+#include "tetblend/pipeline/blended_shape.h"
+#include "tetblend/pipeline/make_blender.h"
 
 namespace tetblend::cli {
 
@@ -45,8 +46,8 @@ void runBlend(const BlendArgs& a) {
 
   PrepareMessages messages;
   messages.warning = printWarning;
-  const ModelData model =
-      fromModel ? readModelFile(a.model) : prepareModel(a.rest, a.examples, a.prepare, messages);
+  const ModelData model = fromModel ? readModelFile(a.model)
+                                    : prepareWithProgress(a.rest, a.examples, a.prepare, messages);
   requireWeightCount(weights, model.examples.size(), "--weights");
   ProgressBar progress("blend", 3, a.prepare.quiet);
   const ShapeBlender blender = makeBlender(

@@ -4,11 +4,11 @@
 
 #include "cli_common.h"
 #include "commands.h"
-#include "handle_deformer.h"
 #include "progress.h"
 #include "tetblend/core/error.h"
 #include "tetblend/meshing/surface_io.h"
 #include "tetblend/meshing/tet_mesh_io.h"
+#include "tetblend/pipeline/handle_deformer.h"
 
 namespace tetblend::cli {
 

@@ -8,13 +8,13 @@
 
 #include "cli_common.h"
 #include "commands.h"
-#include "model_file.h"
 #include "tetblend/core/error.h"
 #include "tetblend/core/tet_geometry.h"
 #include "tetblend/meshing/surface_io.h"
 #include "tetblend/meshing/surface_validation.h"
 #include "tetblend/meshing/tet_boundary.h"
 #include "tetblend/meshing/tet_mesh_io.h"
+#include "tetblend/pipeline/model_file.h"
 
 namespace tetblend::cli {
 

@@ -1,12 +1,12 @@
-// tetblend prepare: surfaces in, model file out (prepare_pipeline.h,
+// tetblend prepare: surfaces in, model file out (prepare_model.h,
 // model_file.h).
 
 #include <memory>
 
 #include "cli_common.h"
 #include "commands.h"
-#include "model_file.h"
-#include "prepare_pipeline.h"
+#include "prepare_options.h"
+#include "tetblend/pipeline/model_file.h"
 
 namespace tetblend::cli {
 
@@ -27,7 +27,7 @@ void runPrepare(const PrepareArgs& a) {
   PrepareMessages messages;
   messages.warning = printWarning;
   messages.note = [&](const std::string& line) { printNote(line, a.settings.quiet); };
-  const ModelData model = prepareModel(a.rest, a.examples, a.settings, messages);
+  const ModelData model = prepareWithProgress(a.rest, a.examples, a.settings, messages);
   writeModelFile(a.output, model);
 }
 

@@ -5,13 +5,13 @@
 #include <cstdio>
 #include <memory>
 
+#include "blend_options.h"
 #include "blend_series.h"
-#include "blend_setup.h"
 #include "cli_common.h"
 #include "commands.h"
-#include "parameter_pca.h"
 #include "tetblend/core/error.h"
-#include "weight_sampling.h"
+#include "tetblend/pipeline/parameter_pca.h"
+#include "tetblend/pipeline/weight_sampling.h"
 
 namespace tetblend::cli {
 
@@ -42,11 +42,7 @@ std::vector<SeriesItem> pcaItems(const ModelData& model, const VariationsArgs& a
   if (a.components < 1) throw InputError("--components must be >= 1");
   if (!(a.range > 0.0)) throw InputError("--range must be > 0");
   const bool consistent = parseOnOff(a.blend.consistency, "--consistency");
-  std::vector<Eigen::VectorXd> params;
-  const TetMesh stitched = stitchedMesh(model);  // excluded tets have no parameters
-  for (const Vertices& e : model.examples)
-    params.push_back(kajiParameterVector(stitched, e, consistent));
-  const ParameterPca pca = parameterPca(params);
+  const ParameterPca pca = modelPca(model, consistent);
   std::vector<SeriesItem> items;
   const auto toStd = [](const Eigen::VectorXd& v) {
     return std::vector<double>(v.data(), v.data() + v.size());

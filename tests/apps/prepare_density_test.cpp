@@ -5,7 +5,7 @@
 // armadillo: 1.34 M tets instead of 134 k).
 
 #include "apps_test_support.h"
-#include "model_file.h"
+#include "tetblend/pipeline/model_file.h"
 
 namespace tetblend::apps_test {
 namespace {
@@ -19,7 +19,7 @@ constexpr double kGradedTetsPerTriangle = 2.0;
 TEST(PrepareDensity, DefaultGradesFromTheSurface) {
   const fs::path dir = scratchDir();
   const fs::path model = prepareBar(dir);
-  const cli::ModelData m = cli::readModelFile(model.string());
+  const ModelData m = readModelFile(model.string());
   const double triangles = static_cast<double>(m.surfaceTriangles.rows());
   EXPECT_LE(static_cast<double>(m.rest.tets.rows()), kGradedTetsPerTriangle * triangles);
 
@@ -36,12 +36,12 @@ TEST(PrepareDensity, DefaultGradesFromTheSurface) {
   const double meanEdge = edges / (3.0 * triangles);
   const double uniformBound = meanEdge * meanEdge * meanEdge / (6.0 * std::sqrt(2.0));
   const fs::path uniform = dir / "uniform.tbm";
-  const RunResult r = tetblend({"prepare", (dir / "bar_rest.obj").string(),
-                                (dir / "bar_twist4pi.obj").string(), "--max-volume",
-                                std::to_string(uniformBound), "-o", uniform.string()},
-                               dir);
+  const RunResult r =
+      tetblend({"prepare", (dir / "bar_rest.obj").string(), (dir / "bar_twist4pi.obj").string(),
+                "--max-volume", std::to_string(uniformBound), "-o", uniform.string()},
+               dir);
   ASSERT_EQ(r.code, 0) << r.err;
-  EXPECT_GT(static_cast<double>(cli::readModelFile(uniform.string()).rest.tets.rows()),
+  EXPECT_GT(static_cast<double>(readModelFile(uniform.string()).rest.tets.rows()),
             kGradedTetsPerTriangle * triangles);
 }
 

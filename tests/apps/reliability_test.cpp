@@ -8,7 +8,7 @@
 #include "address_sanitizer.h"
 #include "apps_test_support.h"
 #include "cli_common.h"
-#include "model_file.h"
+#include "tetblend/pipeline/model_file.h"
 
 namespace tetblend::apps_test {
 namespace {
@@ -33,12 +33,11 @@ void appendLittle(std::string& out, std::uint64_t value, int bytes) {
 // of model_file.h), so only the counts inside are wrong.
 void writeModel(const fs::path& path, const std::string& payload) {
   std::string bytes("TBMODEL\0", 8);
-  appendLittle(bytes, cli::kModelFormatVersion, 4);
+  appendLittle(bytes, kModelFormatVersion, 4);
   appendLittle(bytes, payload.size(), 8);
   bytes += payload;
   appendLittle(bytes,
-               cli::fnv1a64(reinterpret_cast<const unsigned char*>(payload.data()), payload.size()),
-               8);
+               fnv1a64(reinterpret_cast<const unsigned char*>(payload.data()), payload.size()), 8);
   std::ofstream(path, std::ios::binary) << bytes;
 }
 

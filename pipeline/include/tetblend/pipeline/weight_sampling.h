@@ -1,5 +1,6 @@
 #pragma once
-// Reproducible random weight vectors for `tetblend variations`.
+// Reproducible random weight vectors for `tetblend variations` and the
+// Python module's Model.variations.
 //
 // Distribution: barycentric coordinates (b_0, ..., b_n) uniform on the
 // n-simplex (Dirichlet(1, ..., 1), drawn as normalised unit exponentials),
@@ -17,11 +18,11 @@
 #include <cstdint>
 #include <vector>
 
-namespace tetblend::cli {
+namespace tetblend {
 
 /// `count` weight vectors of length `exampleCount` (see the file comment),
 /// from `seed`, widened by `extrapolate` >= 0.
 std::vector<std::vector<double>> sampleSimplexWeights(int count, int exampleCount,
                                                       std::uint64_t seed, double extrapolate);
 
-}  // namespace tetblend::cli
+}  // namespace tetblend

@@ -7,12 +7,12 @@
 #include <utility>
 #include <vector>
 
-#include "model_file.h"
 #include "tetblend/blending/quality.h"
 #include "tetblend/blending/shape_blender.h"
 #include "tetblend/meshing/mesh_data_arrays.h"
+#include "tetblend/pipeline/model_file.h"
 
-namespace tetblend::cli {
+namespace tetblend {
 
 /// A blended shape with its quality.
 struct BlendedShape {
@@ -20,6 +20,12 @@ struct BlendedShape {
   std::vector<NamedArray> cellData;  ///< per-tet arrays (see blendShape)
   QualitySummary quality;            ///< summarizeQuality of the cell arrays
 };
+
+/// blender.blend(weights, method), with the weights named in a DomainError
+/// and an InputError when the result is not finite (weights so large that
+/// the blended maps overflow).
+BlendResult checkedBlend(const ShapeBlender& blender, const std::vector<double>& weights,
+                         BlendMethod method);
 
 /// Blends `weights` with `method` on `blender` (makeBlender of `model`) and
 /// computes the per-tet quality of the result over all the model's tets
@@ -29,8 +35,8 @@ struct BlendedShape {
 /// the methods with per-tet targets, "target_residual" ||F_j - B_j||_F (how far the stitch had to
 /// move tet j from its blended map; 0 where the blended maps were already compatible; NaN for
 /// excluded tets) and, when the model has excluded tets, "excluded" (1 for the tets left out of the
-/// stitch). The nonlinear stitch runs when the blender was made with it (makeBlender). Not safe to
-/// call concurrently on one blender.
+/// stitch). The nonlinear stitch runs when the blender was made with it (makeBlender). Safe to
+/// call from several threads on one blender, as ShapeBlender::blend is.
 BlendedShape blendShape(const ShapeBlender& blender, const ModelData& model,
                         const std::vector<double>& weights, BlendMethod method);
 
@@ -42,4 +48,4 @@ BlendedShape blendShape(const ShapeBlender& blender, const ModelData& model,
 /// the flat and inverted tets apart.
 std::vector<std::pair<std::string, double>> qualityColumns(const QualitySummary& quality);
 
-}  // namespace tetblend::cli
+}  // namespace tetblend

@@ -1,12 +1,12 @@
-#include "blended_shape.h"
+#include "tetblend/pipeline/blended_shape.h"
 
 #include <cmath>
 #include <limits>
 
-#include "cli_common.h"
 #include "tetblend/core/error.h"
+#include "tetblend/pipeline/format_number.h"
 
-namespace tetblend::cli {
+namespace tetblend {
 
 namespace {
 
@@ -36,8 +36,8 @@ std::vector<Eigen::Matrix3d> targetsOfAllTets(const ModelData& model,
 
 }  // namespace
 
-BlendedShape blendShape(const ShapeBlender& blender, const ModelData& model,
-                        const std::vector<double>& weights, BlendMethod method) {
+BlendResult checkedBlend(const ShapeBlender& blender, const std::vector<double>& weights,
+                         BlendMethod method) {
   std::string list;
   for (double w : weights) list += (list.empty() ? "" : ",") + formatNumber(w);
   BlendResult result;
@@ -51,6 +51,12 @@ BlendedShape blendShape(const ShapeBlender& blender, const ModelData& model,
                      ": the blend is not finite (weights this large overflow the blended maps); "
                      "use weights of moderate size");
   }
+  return result;
+}
+
+BlendedShape blendShape(const ShapeBlender& blender, const ModelData& model,
+                        const std::vector<double>& weights, BlendMethod method) {
+  BlendResult result = checkedBlend(blender, weights, method);
   const bool excludes = !model.excludedTets.empty();
   const TetQuality q = excludes ? tetQuality(model.rest, restTetData(model.rest), result.vertices,
                                              targetsOfAllTets(model, result.targets))
@@ -92,4 +98,4 @@ std::vector<std::pair<std::string, double>> qualityColumns(const QualitySummary&
   return finite;
 }
 
-}  // namespace tetblend::cli
+}  // namespace tetblend

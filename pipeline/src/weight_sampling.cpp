@@ -1,18 +1,18 @@
-#include "weight_sampling.h"
+#include "tetblend/pipeline/weight_sampling.h"
 
 #include <cmath>
 #include <random>
 
 #include "tetblend/core/error.h"
 
-namespace tetblend::cli {
+namespace tetblend {
 
 std::vector<std::vector<double>> sampleSimplexWeights(int count, int exampleCount,
                                                       std::uint64_t seed, double extrapolate) {
-  if (count < 0) throw InputError("--count must be >= 0, got " + std::to_string(count));
+  if (count < 0) throw InputError("count must be >= 0, got " + std::to_string(count));
   if (exampleCount < 1) throw InputError("the model has no example shape to vary");
   if (!(extrapolate >= 0.0)) {
-    throw InputError("--extrapolate must be >= 0, got " + std::to_string(extrapolate));
+    throw InputError("extrapolate must be >= 0, got " + std::to_string(extrapolate));
   }
   std::mt19937_64 engine(seed);
   const auto uniformOpen = [&engine]() {
@@ -39,4 +39,4 @@ std::vector<std::vector<double>> sampleSimplexWeights(int count, int exampleCoun
   return out;
 }
 
-}  // namespace tetblend::cli
+}  // namespace tetblend

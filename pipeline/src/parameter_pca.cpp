@@ -1,4 +1,4 @@
-#include "parameter_pca.h"
+#include "tetblend/pipeline/parameter_pca.h"
 
 #include <Eigen/Eigenvalues>
 #include <cmath>
@@ -8,8 +8,9 @@
 #include "tetblend/blending/tet_maps.h"
 #include "tetblend/core/error.h"
 #include "tetblend/core/polar.h"
+#include "tetblend/pipeline/make_blender.h"
 
-namespace tetblend::cli {
+namespace tetblend {
 
 namespace {
 // Relative variance below which a principal component is round-off: the
@@ -72,4 +73,13 @@ ParameterPca parameterPca(const std::vector<Eigen::VectorXd>& exampleParameters)
   return pca;
 }
 
-}  // namespace tetblend::cli
+ParameterPca modelPca(const ModelData& model, bool consistent) {
+  const TetMesh stitched = stitchedMesh(model);
+  std::vector<Eigen::VectorXd> params;
+  for (const Vertices& example : model.examples) {
+    params.push_back(kajiParameterVector(stitched, example, consistent));
+  }
+  return parameterPca(params);
+}
+
+}  // namespace tetblend

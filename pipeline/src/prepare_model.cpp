@@ -1,11 +1,9 @@
-#include "prepare_pipeline.h"
+#include "tetblend/pipeline/prepare_model.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 
-#include "cli_common.h"
-#include "progress.h"
 #include "tetblend/core/error.h"
 #include "tetblend/core/tet_geometry.h"
 #include "tetblend/meshing/example_aware_tets.h"
@@ -14,12 +12,17 @@
 #include "tetblend/meshing/surface_validation.h"
 #include "tetblend/meshing/tetgen_mesher.h"
 #include "tetblend/meshing/tetrisation.h"
+#include "tetblend/pipeline/format_number.h"
 
-namespace tetblend::cli {
+namespace tetblend {
 namespace {
 
 void say(const std::function<void(const std::string&)>& sink, const std::string& line) {
   if (sink) sink(line);
+}
+
+void advance(const PrepareMessages& messages, std::size_t steps) {
+  if (messages.step) messages.step(steps);
 }
 
 // "1.34 M" / "134 k" / "950": a tet count people read at a glance.
@@ -58,14 +61,23 @@ double worstVolumeRatio(const TetMesh& rest, const CompatibleTetResult& placed) 
   return worst;
 }
 
+// The checks that need no surface: examples given, a valid quality bound.
+void checkPrepareArguments(std::size_t exampleCount, const PrepareOptions& options) {
+  if (exampleCount == 0) throw InputError("give at least one example surface");
+  if (options.radiusEdgeRatio != 0.0 && !(options.radiusEdgeRatio > 1.0)) {
+    throw InputError("quality must be 0 or greater than 1, got " +
+                     formatNumber(options.radiusEdgeRatio));
+  }
+}
+
 // --strict fails fast: an example whose surface intersects itself is refused
 // before any meshing, since some of its tets can never be embedded.
 void refuseSelfIntersecting(const Triangles& triangles, const std::vector<SurfaceMesh>& examples,
-                            const std::vector<std::string>& examplePaths) {
+                            const std::vector<std::string>& exampleNames) {
   for (std::size_t k = 0; k < examples.size(); ++k) {
     const SelfIntersections found = findSelfIntersections(examples[k].vertices, triangles, 1);
     if (found.pairCount > 0) {
-      throw InputError(examplePaths[k] + ": " + diagnosis(found) +
+      throw InputError(exampleNames[k] + ": " + diagnosis(found) +
                        ", so some tets cannot be embedded: repair the pose, or leave out --strict "
                        "to exclude those tets from the stitch");
     }
@@ -74,72 +86,58 @@ void refuseSelfIntersecting(const Triangles& triangles, const std::vector<Surfac
 
 }  // namespace
 
-void addPrepareOptions(CLI::App& command, PrepareSettings& settings) {
-  command
-      .add_option("--quality", settings.radiusEdgeRatio,
-                  "TetGen quality bound: max circumradius / shortest edge of a tet (> 1; 0 = no "
-                  "refinement)")
-      ->capture_default_str();
-  command
-      .add_option("--max-volume", settings.maxVolume,
-                  "TetGen volume bound per tet, in mesh units cubed (default: none; the quality "
-                  "bound grades the interior from the surface inwards, and the examples refine "
-                  "it where they need it)")
-      ->check(CLI::NonNegativeNumber);
-  command.add_flag("--tetrise", settings.tetrise,
-                   "one tet per surface triangle (apex along the normal) instead of TetGen: for "
-                   "open or non-watertight surfaces (default: off)");
-  command.add_flag("--strict", settings.strict,
-                   "refuse an example whose surface folds or intersects itself so that some tets "
-                   "cannot be embedded (default: off; such tets are reported and left out of the "
-                   "stitch)");
-  addThreadsOption(command, settings.threads);
-}
+std::size_t prepareStepCount(std::size_t exampleCount) { return exampleCount + 2; }
 
 ModelData prepareModel(const std::string& restPath, const std::vector<std::string>& examplePaths,
-                       const PrepareSettings& settings, const PrepareMessages& messages) {
-  if (examplePaths.empty()) throw InputError("give at least one example surface");
-  if (settings.radiusEdgeRatio != 0.0 && !(settings.radiusEdgeRatio > 1.0)) {
-    throw InputError("--quality must be 0 or greater than 1, got " +
-                     formatNumber(settings.radiusEdgeRatio));
-  }
-  ProgressBar progress("prepare", examplePaths.size() + 2, settings.quiet);
+                       const PrepareOptions& options, const PrepareMessages& messages) {
+  checkPrepareArguments(examplePaths.size(), options);
   const SurfaceMesh rest = readSurface(restPath);
-  SurfaceValidationOptions validation;
-  validation.requireClosed = !settings.tetrise;
-  requireValidRest(rest, restPath, validation);
   std::vector<SurfaceMesh> examples;
-  for (const std::string& path : examplePaths) {
-    examples.push_back(readSurface(path));
-    requireCompatibleExample(rest, examples.back(), path);
-    if (examples.back().vertices == rest.vertices) {
-      say(messages.warning, path + ": every vertex equals the rest's (" + restPath +
+  for (const std::string& path : examplePaths) examples.push_back(readSurface(path));
+  return prepareModel(rest, examples, restPath, examplePaths, options, messages);
+}
+
+ModelData prepareModel(const SurfaceMesh& rest, const std::vector<SurfaceMesh>& examples,
+                       const std::string& restName, const std::vector<std::string>& exampleNames,
+                       const PrepareOptions& options, const PrepareMessages& messages) {
+  checkPrepareArguments(examples.size(), options);
+  if (exampleNames.size() != examples.size()) {
+    throw InputError("prepare: " + std::to_string(exampleNames.size()) + " names given for " +
+                     std::to_string(examples.size()) + " examples");
+  }
+  SurfaceValidationOptions validation;
+  validation.requireClosed = !options.tetrise;
+  requireValidRest(rest, restName, validation);
+  for (std::size_t k = 0; k < examples.size(); ++k) {
+    requireCompatibleExample(rest, examples[k], exampleNames[k]);
+    if (examples[k].vertices == rest.vertices) {
+      say(messages.warning, exampleNames[k] + ": every vertex equals the rest's (" + restName +
                                 "): blending this example changes nothing");
     }
   }
-  if (settings.strict) refuseSelfIntersecting(rest.triangles, examples, examplePaths);
-  progress.advance();
+  if (options.strict) refuseSelfIntersecting(rest.triangles, examples, exampleNames);
+  advance(messages, 1);
 
   ModelData model;
   model.surfaceTriangles = rest.triangles;
   model.surfaceVertexCount = static_cast<int>(rest.vertices.rows());
-  model.restSource = restPath;
-  model.exampleSources = examplePaths;
-  if (settings.tetrise) {
-    std::vector<TetMesh> meshes = tetriseCompatible(rest, examples, examplePaths);
+  model.restSource = restName;
+  model.exampleSources = exampleNames;
+  if (options.tetrise) {
+    std::vector<TetMesh> meshes = tetriseCompatible(rest, examples, exampleNames);
     model.rest = std::move(meshes.front());
     for (std::size_t k = 1; k < meshes.size(); ++k) model.examples.push_back(meshes[k].vertices);
-    progress.advance(examplePaths.size() + 1);
+    advance(messages, exampleNames.size() + 1);
     return model;
   }
   TetGenOptions tetgen;
-  tetgen.maxRadiusEdgeRatio = settings.radiusEdgeRatio;
-  tetgen.maxTetVolume = settings.maxVolume.value_or(0.0);
-  tetgen.sourceName = restPath;
+  tetgen.maxRadiusEdgeRatio = options.radiusEdgeRatio;
+  tetgen.maxTetVolume = options.maxVolume.value_or(0.0);
+  tetgen.sourceName = restName;
   const TetMesh tets = tetrahedralize(rest, tetgen);
-  progress.advance();
+  advance(messages, 1);
   if (tets.tets.rows() > kLargeMeshWarningTets) {
-    say(messages.warning, restPath + ": " + roughCount(tets.tets.rows()) +
+    say(messages.warning, restName + ": " + roughCount(tets.tets.rows()) +
                               " tets; preparing and each blend need " + "about " +
                               formatNumber(std::round(tets.tets.rows() / 1e5) / 10) +
                               " GB of memory (a coarser mesh: a larger --quality, e.g. 3)");
@@ -148,18 +146,18 @@ ModelData prepareModel(const std::string& restPath, const std::vector<std::strin
   for (const SurfaceMesh& example : examples) surfaces.push_back(example.vertices);
   CompatibleTetMeshes built = buildCompatibleTetMeshes(
       tets, model.surfaceVertexCount, surfaces, ExampleAwareOptions{}, [&](const char* stage) {
-        if (std::string(stage) == "place") progress.advance();
+        if (std::string(stage) == "place") advance(messages, 1);
       });
   model.rest = std::move(built.rest);
   for (std::size_t k = 0; k < examples.size(); ++k) {
     CompatibleTetResult& placed = built.examples[k];
     if (!placed.invertedTets.empty()) {
-      const std::string what = examplePaths[k] + ": " + std::to_string(placed.invertedTets.size()) +
+      const std::string what = exampleNames[k] + ": " + std::to_string(placed.invertedTets.size()) +
                                " tets cannot be embedded (worst volume ratio " +
                                threeDigits(worstVolumeRatio(model.rest, placed)) + ", first tet " +
                                std::to_string(placed.invertedTets.front()) + "); " +
                                diagnosis(built.selfIntersections[k]);
-      if (settings.strict) {
+      if (options.strict) {
         throw InputError(what + ": leave out --strict to exclude those tets from the stitch");
       }
       say(messages.warning, what + ": they are left out of the stitch of every blend");
@@ -171,7 +169,7 @@ ModelData prepareModel(const std::string& restPath, const std::vector<std::strin
   std::sort(model.excludedTets.begin(), model.excludedTets.end());
   model.excludedTets.erase(std::unique(model.excludedTets.begin(), model.excludedTets.end()),
                            model.excludedTets.end());
-  say(messages.note, restPath + ": " + roughCount(model.rest.tets.rows()) + " tets, " +
+  say(messages.note, restName + ": " + roughCount(model.rest.tets.rows()) + " tets, " +
                          std::to_string(model.rest.vertices.rows()) + " vertices (" +
                          std::to_string(built.steinerPoints) +
                          " Steiner points added for the examples in " +
@@ -180,4 +178,4 @@ ModelData prepareModel(const std::string& restPath, const std::vector<std::strin
   return model;
 }
 
-}  // namespace tetblend::cli
+}  // namespace tetblend

@@ -22,8 +22,9 @@
 #include <vector>
 
 #include "tetblend/core/mesh_types.h"
+#include "tetblend/pipeline/model_file.h"
 
-namespace tetblend::cli {
+namespace tetblend {
 
 /// Principal components of the rest and its examples, as weight vectors.
 struct ParameterPca {
@@ -46,4 +47,8 @@ Eigen::VectorXd kajiParameterVector(const TetMesh& rest, const Vertices& example
 /// 1e-12 times the largest are dropped (they are round-off).
 ParameterPca parameterPca(const std::vector<Eigen::VectorXd>& exampleParameters);
 
-}  // namespace tetblend::cli
+/// The PCA of a model: parameterPca of its examples' kajiParameterVector over
+/// stitchedMesh(model) (excluded tets have no parameters).
+ParameterPca modelPca(const ModelData& model, bool consistent);
+
+}  // namespace tetblend

@@ -1,14 +1,16 @@
-#include "handle_deformer.h"
+#include "tetblend/pipeline/handle_deformer.h"
 
 #include <cmath>
 #include <fstream>
+#include <iterator>
 #include <nlohmann/json.hpp>
 
 #include "tetblend/core/dual_quaternion.h"
+#include "tetblend/core/dual_quaternion_blend.h"
 #include "tetblend/core/error.h"
 #include "tetblend/core/tet_geometry.h"
 
-namespace tetblend::cli {
+namespace tetblend {
 
 namespace {
 
@@ -59,17 +61,15 @@ HandleBlend parseHandleBlend(const std::string& name) {
   if (name == "dqs") return HandleBlend::kDqs;
   if (name == "kaji") return HandleBlend::kKaji;
   if (name == "kaji-frechet") return HandleBlend::kKajiFrechet;
-  throw InputError("--method: unknown deformer '" + name + "'; use lbs, dqs, kaji or kaji-frechet");
+  throw InputError("method: unknown deformer '" + name + "'; use lbs, dqs, kaji or kaji-frechet");
 }
 
-HandleSpec readHandleSpec(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError(path + ": cannot open the handle file");
+HandleSpec parseHandleSpec(const std::string& text, const std::string& what) {
   HandleSpec spec;
   try {
-    const json j = json::parse(in);
+    const json j = json::parse(text);
     if (!j.contains("handles") || !j["handles"].is_array() || j["handles"].empty()) {
-      throw InputError(path + ": needs a non-empty \"handles\" array");
+      throw InputError("needs a non-empty \"handles\" array");
     }
     for (std::size_t i = 0; i < j["handles"].size(); ++i)
       spec.handles.push_back(parseHandle(j["handles"][i], "handles[" + std::to_string(i) + "]"));
@@ -79,24 +79,31 @@ HandleSpec readHandleSpec(const std::string& path) {
       spec.weights.resize(static_cast<Eigen::Index>(w.size()), n);
       for (std::size_t v = 0; v < w.size(); ++v) {
         if (!w[v].is_array() || static_cast<Eigen::Index>(w[v].size()) != n)
-          throw InputError(path + ": weights[" + std::to_string(v) + "] needs " +
-                           std::to_string(n) + " numbers, one per handle");
+          throw InputError("weights[" + std::to_string(v) + "] needs " + std::to_string(n) +
+                           " numbers, one per handle");
         for (Eigen::Index i = 0; i < n; ++i)
           spec.weights(static_cast<Eigen::Index>(v), i) =
               w[v][static_cast<std::size_t>(i)].get<double>();
       }
     }
   } catch (const json::exception& e) {
-    throw InputError(path + ": bad handle JSON (" + e.what() + ")");
+    throw InputError(what + ": bad handle JSON (" + e.what() + ")");
   } catch (const InputError& e) {
-    throw InputError(path + ": " + e.what());
+    throw InputError(what + ": " + e.what());
   }
   return spec;
 }
 
+HandleSpec readHandleSpec(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw InputError(path + ": cannot open the handle file");
+  const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  return parseHandleSpec(text, path);
+}
+
 Eigen::MatrixXd distanceWeights(const Vertices& vertices, const std::vector<Handle>& handles,
                                 double falloff) {
-  if (!(falloff > 0.0)) throw InputError("--falloff must be > 0");
+  if (!(falloff > 0.0)) throw InputError("falloff must be > 0");
   const double delta = kDistanceOffset * std::max(boundingBoxDiagonal(vertices), 1e-300);
   Eigen::MatrixXd w(vertices.rows(), static_cast<Eigen::Index>(handles.size()));
   for (Eigen::Index v = 0; v < vertices.rows(); ++v) {
@@ -139,14 +146,11 @@ Vertices deformByHandles(const Vertices& vertices, const std::vector<Handle>& ha
     const Eigen::Vector3d u = vertices.row(v).transpose();
     Eigen::Vector3d p;
     if (method == HandleBlend::kDqs) {
-      // DLB (Kavan et al. eq. (4)): signs aligned with the first handle
-      // (shortest path), weighted sum, normalised.
-      DualQuaternion sum = dqs[0] * 0.0;
-      for (std::size_t i = 0; i < dqs.size(); ++i) {
-        const double sign = dqs[i].real().coeffs().dot(dqs[0].real().coeffs()) < 0 ? -1.0 : 1.0;
-        sum = sum + dqs[i] * (sign * w[i]);
+      try {
+        p = dlb(dqs.data(), w.data(), static_cast<int>(dqs.size())).transformPoint(u);
+      } catch (const DomainError& e) {
+        throw DomainError("vertex " + std::to_string(v) + ": " + e.what());
       }
-      p = sum.normalized().transformPoint(u);
     } else {
       Eigen::Matrix4d a = Eigen::Matrix4d::Zero();
       if (method == HandleBlend::kLbs) {
@@ -163,4 +167,4 @@ Vertices deformByHandles(const Vertices& vertices, const std::vector<Handle>& ha
   return out;
 }
 
-}  // namespace tetblend::cli
+}  // namespace tetblend

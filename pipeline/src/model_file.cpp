@@ -1,4 +1,4 @@
-#include "model_file.h"
+#include "tetblend/pipeline/model_file.h"
 
 #include <cstring>
 #include <fstream>
@@ -7,7 +7,7 @@
 #include "tetblend/core/error.h"
 #include "tetblend/meshing/atomic_file.h"
 
-namespace tetblend::cli {
+namespace tetblend {
 
 namespace {
 
@@ -277,4 +277,4 @@ ModelData readModelFile(const std::string& path) {
   return model;
 }
 
-}  // namespace tetblend::cli
+}  // namespace tetblend

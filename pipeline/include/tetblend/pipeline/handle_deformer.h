@@ -21,7 +21,7 @@
 #include "tetblend/core/kaji_ochiai.h"
 #include "tetblend/core/mesh_types.h"
 
-namespace tetblend::cli {
+namespace tetblend {
 
 /// One handle: its transform as parameters (phi(params) is its matrix) and
 /// the centre used by distance weights.
@@ -34,7 +34,8 @@ struct Handle {
 /// The methods that blend handle transforms per vertex.
 enum class HandleBlend {
   kLbs,          ///< "lbs": sum_i w_i A_i (linear blend skinning)
-  kDqs,          ///< "dqs": DLB of the rigid parts' dual quaternions (Kavan §3.4);
+  kDqs,          ///< "dqs": DLB of the rigid parts' dual quaternions (Kavan §3.4; core's
+                 ///< dlb: antipodes aligned with the handle of largest weight);
                  ///< handles must be rigid (no stretch)
   kKaji,         ///< "kaji": phi(sum_i w_i psi(A_i)) (Kaji–Ochiai §5)
   kKajiFrechet,  ///< "kaji-frechet": refined weighted Fréchet sum (Alg. 2)
@@ -53,7 +54,12 @@ struct HandleSpec {
   Eigen::MatrixXd weights;  ///< #V by n, or empty when not given
 };
 
-/// Reads `path`; InputError naming the file and the entry at fault.
+/// The spec in JSON `text`; InputError naming `what` (a file name) and the
+/// entry at fault.
+HandleSpec parseHandleSpec(const std::string& text, const std::string& what);
+
+/// Reads `path` (parseHandleSpec); InputError naming the file and the entry
+/// at fault.
 HandleSpec readHandleSpec(const std::string& path);
 
 /// Distance weights (see the file comment), #V by n, rows summing to 1.
@@ -61,8 +67,9 @@ Eigen::MatrixXd distanceWeights(const Vertices& vertices, const std::vector<Hand
                                 double falloff);
 
 /// Deformed positions (#V by 3) of `vertices` under `handles` with `weights`
-/// (#V by n). DomainError naming the handle for dqs with a non-rigid handle.
+/// (#V by n). DomainError naming the handle for dqs with a non-rigid handle,
+/// and naming the vertex where its weights cancel the blended rotation (dlb).
 Vertices deformByHandles(const Vertices& vertices, const std::vector<Handle>& handles,
                          const Eigen::MatrixXd& weights, HandleBlend method);
 
-}  // namespace tetblend::cli
+}  // namespace tetblend

@@ -25,7 +25,7 @@
 
 #include "tetblend/core/mesh_types.h"
 
-namespace tetblend::cli {
+namespace tetblend {
 
 /// Version of the layout above; bump on any change of the payload. Version 1
 /// files (no excluded tets) are still read.
@@ -59,4 +59,4 @@ void writeModelFile(const std::string& path, const ModelData& model);
 /// other-version, truncated or damaged file.
 ModelData readModelFile(const std::string& path);
 
-}  // namespace tetblend::cli
+}  // namespace tetblend
