@@ -9,6 +9,7 @@ packages=(
   libeigen3-dev libcgal-dev libtet1.5-dev libsuitesparse-dev libceres-dev
   libvtk9-dev libcli11-dev nlohmann-json3-dev libtbb-dev
   libgtest-dev libgmock-dev libbenchmark-dev
+  clang libclang-rt-14-dev  # libFuzzer + ASan/UBSan runtimes for ./dev.sh fuzz
   libcgal-demo  # closed test meshes: data.tar.gz with data/meshes/*.off
   # Multithreaded BLAS for CHOLMOD's supernodal factorisations (becomes the
   # libblas.so.3 alternative): the 1M-tet compatible-mesh factorisation takes
