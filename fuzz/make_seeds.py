@@ -263,8 +263,9 @@ def batch_seeds():
 
 
 if __name__ == "__main__":
-    for kind in ("corpus", "regressions"):
-        shutil.rmtree(os.path.join(HERE, kind), ignore_errors=True)
+    # regressions/ also holds inputs the fuzzers found (kept as found): only
+    # the corpus is remade from scratch.
+    shutil.rmtree(os.path.join(HERE, "corpus"), ignore_errors=True)
     os.makedirs(os.path.join(HERE, "corpus", "batch_spec"))
     obj_seeds()
     off_seeds()
