@@ -60,8 +60,8 @@ void repairModelFields(std::string& bytes) {
     return;
   }
   const std::uint64_t payloadSize = bytes.size() - kHeader - kTrailer;
-  const std::uint64_t hash = cli::fnv1a64(
-      reinterpret_cast<const unsigned char*>(bytes.data() + kHeader), payloadSize);
+  const std::uint64_t hash =
+      cli::fnv1a64(reinterpret_cast<const unsigned char*>(bytes.data() + kHeader), payloadSize);
   for (int i = 0; i < 8; ++i) {
     bytes[12 + i] = static_cast<char>((payloadSize >> (8 * i)) & 0xff);
     bytes[kHeader + payloadSize + i] = static_cast<char>((hash >> (8 * i)) & 0xff);
@@ -72,8 +72,7 @@ template <typename Elements>
 void checkMesh(const Vertices& vertices, const Elements& elements, const std::string& path) {
   if (!vertices.allFinite()) fail(path + ": the reader returned a non-finite position");
   if (elements.size() > 0 && (elements.minCoeff() < 0 || elements.maxCoeff() >= vertices.rows())) {
-    fail(path + ": the reader returned an index outside 0.." +
-         std::to_string(vertices.rows() - 1));
+    fail(path + ": the reader returned an index outside 0.." + std::to_string(vertices.rows() - 1));
   }
 }
 

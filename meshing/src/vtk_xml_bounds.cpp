@@ -17,7 +17,7 @@ constexpr std::uint64_t kZlibRatio = 1032;
 constexpr std::uint64_t kLz4Ratio = 256;
 constexpr std::uint64_t kOtherRatio = 1ULL << 16;
 
-constexpr const char* kCountAttributes[] = {"NumberOfPoints", "NumberOfCells", "NumberOfVerts",
+constexpr const char* kCountAttributes[] = {"NumberOfPoints", "NumberOfCells",  "NumberOfVerts",
                                             "NumberOfLines",  "NumberOfStrips", "NumberOfPolys"};
 
 [[noreturn]] void damaged(const std::string& path, const std::string& what) {
@@ -27,7 +27,8 @@ constexpr const char* kCountAttributes[] = {"NumberOfPoints", "NumberOfCells", "
 // The value of attribute `name` in the tag that starts at `tag`, or "".
 std::string_view attribute(std::string_view text, std::size_t tag, std::string_view name) {
   const std::size_t end = text.find('>', tag);
-  const std::string_view element = text.substr(tag, end == std::string_view::npos ? end : end - tag);
+  const std::string_view element =
+      text.substr(tag, end == std::string_view::npos ? end : end - tag);
   const std::string key = " " + std::string(name) + "=\"";
   const std::size_t at = element.find(key);
   if (at == std::string_view::npos) return {};
@@ -106,9 +107,8 @@ void checkBlockHeader(const std::string& path, std::string_view header, std::uin
     const std::uint64_t compressed = word(header, 3 + b, layout);
     const std::uint64_t size = b + 1 == blocks && lastSize != 0 ? lastSize : blockSize;
     if (compressed > room || size / layout.ratio > compressed) {
-      damaged(path, "compressed block " + std::to_string(b) + " of " +
-                        std::to_string(compressed) + " bytes declares " + std::to_string(size) +
-                        " bytes uncompressed");
+      damaged(path, "compressed block " + std::to_string(b) + " of " + std::to_string(compressed) +
+                        " bytes declares " + std::to_string(size) + " bytes uncompressed");
     }
   }
 }
@@ -125,7 +125,7 @@ void checkVtkXmlBounds(const std::string& path, const std::string& bytes) {
   Layout layout;
   layout.word = attribute(xml, file, "header_type") == "UInt64" ? 8 : 4;
   layout.bigEndian = attribute(xml, file, "byte_order") == "BigEndian";
-  layout.ratio = compressor == "vtkZLibDataCompressor" ? kZlibRatio
+  layout.ratio = compressor == "vtkZLibDataCompressor"  ? kZlibRatio
                  : compressor == "vtkLZ4DataCompressor" ? kLz4Ratio
                                                         : kOtherRatio;
   const std::uint64_t limit = bytes.size() * (compressor.empty() ? 1 : layout.ratio);

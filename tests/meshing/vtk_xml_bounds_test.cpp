@@ -85,10 +85,14 @@ TEST(VtkXmlBounds, DeclaredSizesBeyondTheFileAreRefusedBeforeVtkAllocates) {
   constexpr std::uint32_t kHugeBlock = 0x7ffffff0u;   // a 2 GB block from a few bytes
   const std::vector<Mutation> cases = {
       {"points", "a.vtp",
-       [](std::string& b) { replaceOnce(b, "NumberOfPoints=\"4\"", "NumberOfPoints=\"2000000000\""); },
+       [](std::string& b) {
+         replaceOnce(b, "NumberOfPoints=\"4\"", "NumberOfPoints=\"2000000000\"");
+       },
        "a.vtp: NumberOfPoints 2000000000 is more than its "},
       {"cells", "a.vtu",
-       [](std::string& b) { replaceOnce(b, "NumberOfCells=\"1\"", "NumberOfCells=\"2000000000\""); },
+       [](std::string& b) {
+         replaceOnce(b, "NumberOfCells=\"1\"", "NumberOfCells=\"2000000000\"");
+       },
        "a.vtu: NumberOfCells 2000000000 is more than its "},
       {"blocks", "a.vtp", [](std::string& b) { setWord(b, firstHeader(b), kHugeBlocks); },
        "a.vtp: a compressed array declares 4294967280 blocks in "},
