@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <new>
 #include <set>
 #include <string>
 
@@ -95,7 +96,15 @@ vtkSmartPointer<Reader> runReader(const std::string& path, const char* kind) {
       compressor->AddObserver(vtkCommand::WarningEvent, messages);
     }
   }
-  reader->Update();
+  try {
+    reader->Update();
+  } catch (const std::bad_alloc&) {
+    // A size VTK takes from the data itself (a cell array's last offset sizes
+    // its connectivity) rather than from the header checked above.
+    throw InputError(path +
+                     ": VTK ran out of memory for the sizes the file declares: the file is "
+                     "damaged, or too large for this machine");
+  }
   if (!messages->text.empty() || reader->GetErrorCode() != 0) {
     throw InputError(path + ": VTK could not read the file (" + messages->text +
                      "): the file is damaged or truncated");

@@ -137,5 +137,28 @@ TEST(VtkXmlBounds, DeclaredSizesBeyondTheFileAreRefusedBeforeVtkAllocates) {
   }
 }
 
+// Found by fuzz_vtp/fuzz_vtu: VTK sizes a cell array's connectivity from its
+// last offset, a value in the data that the header check cannot see; the
+// std::bad_alloc it threw escaped the reader without naming the file.
+TEST(VtkXmlBounds, CellOffsetBeyondMemoryIsAnInputErrorNamingTheFile) {
+  constexpr const char* kHugeOffset = "1125899906842624";  // 2^50 ids: 8 PB
+  const std::string vtp =
+      std::string(
+          "<VTKFile type=\"PolyData\" version=\"0.1\" byte_order=\"LittleEndian\">"
+          "<PolyData><Piece NumberOfPoints=\"3\" NumberOfPolys=\"1\">"
+          "<Points><DataArray type=\"Float64\" NumberOfComponents=\"3\" "
+          "format=\"ascii\">0 0 0 1 0 0 0 1 0</DataArray></Points><Polys>"
+          "<DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">0 1 "
+          "2</DataArray><DataArray type=\"Int64\" Name=\"offsets\" "
+          "format=\"ascii\">") +
+      kHugeOffset + "</DataArray></Polys></Piece></PolyData></VTKFile>\n";
+  TempDir dir;
+  io_test::writeText(dir.file("a.vtp"), vtp);
+  const std::string message = messageOf(dir.file("a.vtp"));
+  EXPECT_NE(message.find("a.vtp: VTK ran out of memory for the sizes the file declares"),
+            std::string::npos)
+      << message;
+}
+
 }  // namespace
 }  // namespace tetblend
