@@ -104,7 +104,12 @@ std::string writeInput(const ScratchDir& dir, std::string bytes, const std::stri
 
 void readAndCheck(const std::string& path, const std::string& extension) {
   if (extension == ".tbm") {
-    cli::checkModel(cli::readModelFile(path), path);
+    const cli::ModelData model = cli::readModelFile(path);
+    try {
+      cli::checkModel(model, path);
+    } catch (const Error& e) {
+      fail(std::string("the reader returned a model its own check refuses: ") + e.what());
+    }
   } else if (extension == ".json") {
     cli::readBatchSpec(path);
   } else if (extension == ".vtu" || extension == ".node" || extension == ".mesh") {
