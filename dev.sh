@@ -6,9 +6,13 @@
 #   ./dev.sh test    set up, build, and run the whole test suite with ctest
 #   ./dev.sh asan    set up, build with ASan+UBSan into build/asan, run the suite
 #   ./dev.sh bench   set up, build, and run the benchmarks (figures for README)
+#   ./dev.sh fuzz [seconds]  set up, build the reader fuzzers (clang, libFuzzer,
+#                    ASan+UBSan) into build/fuzz, replay their seeds and
+#                    regressions, fuzz each reader for seconds (default 30)
+# TETBLEND_JOBS limits build and test parallelism (default: all cores).
 set -euo pipefail
 cd "$(dirname "$0")"
-jobs=$(nproc)
+jobs=${TETBLEND_JOBS:-$(nproc)}
 
 build() { # build <dir> <cmake args...>
   local dir=$1; shift
@@ -34,5 +38,13 @@ case "${1:-}" in
   bench)
     bash setup.sh && build build/release -DCMAKE_BUILD_TYPE=Release
     for b in build/release/apps/bench/bench_*; do "$b"; done ;;
-  *) sed -n '2,9p' "$0"; exit 2 ;;
+  fuzz)
+    bash setup.sh
+    CC=clang CXX=clang++ cmake -S . -B build/fuzz -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+      -DTETBLEND_BUILD_FUZZERS=ON -DTETBLEND_BUILD_TESTS=OFF -DTETBLEND_BUILD_BENCHMARKS=OFF \
+      -DTETBLEND_BUILD_PYTHON=OFF
+    cmake --build build/fuzz --parallel "$jobs" --target fuzz_all
+    TETBLEND_FUZZ_SECONDS="${2:-30}" \
+      ctest --test-dir build/fuzz --output-on-failure --parallel "$jobs" -L fuzz ;;
+  *) sed -n '2,12p' "$0"; exit 2 ;;
 esac

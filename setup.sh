@@ -11,6 +11,7 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   # The Python module and its tests, for Debian's /usr/bin/python3.
   pybind11-dev python3-dev python3-numpy python3-pytest
+  clang libclang-rt-14-dev  # libFuzzer + ASan/UBSan runtimes for ./dev.sh fuzz
   libcgal-demo  # closed test meshes: data.tar.gz with data/meshes/*.off
   # Multithreaded BLAS for CHOLMOD's supernodal factorisations (becomes the
   # libblas.so.3 alternative): the 1M-tet compatible-mesh factorisation takes

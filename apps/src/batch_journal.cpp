@@ -13,9 +13,9 @@
 #include <set>
 #include <sstream>
 
-#include "model_file.h"
 #include "tetblend/core/error.h"
 #include "tetblend/meshing/atomic_file.h"
+#include "tetblend/pipeline/model_file.h"
 
 namespace tetblend::cli {
 namespace {

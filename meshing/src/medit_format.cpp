@@ -48,7 +48,19 @@ TetMesh readMedit(const std::string& path) {
   TetMesh mesh;
   mesh.vertices.resize(0, 3);
   mesh.tets.resize(0, 4);
-  bool haveVertices = false;
+  // Line of each section read so far: a second Vertices section would leave
+  // the tets read before it pointing past the vertices, a second Tetrahedra
+  // section would drop the first one's tets.
+  std::size_t verticesLine = 0;
+  std::size_t tetrahedraLine = 0;
+  const auto once = [&](std::size_t& first, std::string_view section, std::size_t line) {
+    if (first != 0) {
+      throwAtLine(path, line,
+                  "a second " + std::string(section) + " section (first on line " +
+                      std::to_string(first) + "): a file holds one; fix the file");
+    }
+    first = line;
+  };
   std::string_view keyword;
   while (tokens.next(keyword)) {
     const std::size_t line = tokens.lineNumber();
@@ -62,6 +74,7 @@ TetMesh readMedit(const std::string& path) {
                     "Dimension " + printableToken(d) + ": only 3D meshes are supported");
       }
     } else if (keyword == "Vertices") {
+      once(verticesLine, keyword, line);
       const int count = nextCount("the vertex count");
       // Each vertex has 4 values ("x y z ref") of at least one byte; the whole
       // file bounds what is left of it.
@@ -79,9 +92,9 @@ TetMesh readMedit(const std::string& path) {
         mesh.vertices.row(v) = p;
         nextToken([v] { return "the reference of vertex " + std::to_string(v); });
       }
-      haveVertices = true;
     } else if (keyword == "Tetrahedra") {
-      if (!haveVertices) throwAtLine(path, line, "Tetrahedra before Vertices: fix the file");
+      if (verticesLine == 0) throwAtLine(path, line, "Tetrahedra before Vertices: fix the file");
+      once(tetrahedraLine, keyword, line);
       const int count = nextCount("the tet count");
       constexpr std::size_t kMinTetBytes = 5;  // "a b c d ref"
       mesh.tets.resize(rowsToAllocate(count, kMinTetBytes, text.size()), 4);

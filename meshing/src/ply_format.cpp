@@ -301,6 +301,9 @@ SurfaceMesh readPly(const std::string& path) {
   mesh.triangles.resize(0, 3);
   ValueSource source(path, text, lines, encoding);
   for (const Element& e : elements) {
+    // Rows without properties hold no bytes (binary) or no tokens (ascii):
+    // nothing to read, however large the count.
+    if (e.properties.empty()) continue;
     const bool isVertex = e.name == "vertex";
     const bool isFace = e.name == "face";
     const Eigen::Index rows = rowsToAllocate(e.count, minimumRowBytes(e, encoding), available);
@@ -341,6 +344,7 @@ SurfaceMesh readPly(const std::string& path) {
           throw InputError(path + ":" + where() + ": list length " + length + " of " + element() +
                            " is not a whole number of entries: fix the file");
         }
+        if (corners < 0) throw InputError(path + ":" + where() + ": negative list length");
         const bool indices = isFace && isIndexList(p);
         if (indices && corners != 3) {
           throw InputError(
@@ -348,15 +352,19 @@ SurfaceMesh readPly(const std::string& path) {
               std::to_string(static_cast<long long>(corners)) +
               " vertices: " + (corners > 3 ? "triangulate it first" : "a face needs 3"));
         }
-        if (corners < 0) throw InputError(path + ":" + where() + ": negative list length");
         for (int c = 0; c < static_cast<int>(corners); ++c) {
           const double value = source.value(p.type, [&] { return "list entry of " + element(); });
           if (!indices) continue;
-          if (value < 0 || value >= vertexCount) {
-            throw InputError(path + ":" + where() + ": " + element() + ": index " +
-                             std::to_string(static_cast<long long>(value)) + " out of range 0.." +
-                             std::to_string(vertexCount - 1) +
-                             ": it refers to a vertex that does not exist");
+          // NaN, fractions and values beyond int (float index types) are
+          // refused before the conversion to int.
+          if (!(value >= 0 && value < vertexCount) || value != std::floor(value)) {
+            std::string index;
+            appendDouble(index, value);
+            throw InputError(path + ":" + where() + ": " + element() + ": index " + index +
+                             (value != std::floor(value) && std::isfinite(value)
+                                  ? " is not a whole number: fix the file"
+                                  : " out of range 0.." + std::to_string(vertexCount - 1) +
+                                        ": it refers to a vertex that does not exist"));
           }
           mesh.triangles(i, c) = static_cast<int>(value);
         }

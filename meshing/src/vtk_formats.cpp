@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <new>
 #include <set>
 #include <string>
 
@@ -14,6 +15,7 @@
 #include <vtkCellData.h>
 #include <vtkCellTypes.h>
 #include <vtkCommand.h>
+#include <vtkDataCompressor.h>
 #include <vtkDoubleArray.h>
 #include <vtkExecutive.h>
 #include <vtkIdList.h>
@@ -23,6 +25,7 @@
 #include <vtkPolyData.h>
 #include <vtkSmartPointer.h>
 #include <vtkUnstructuredGrid.h>
+#include <vtkXMLDataParser.h>
 #include <vtkXMLPolyDataReader.h>
 #include <vtkXMLPolyDataWriter.h>
 #include <vtkXMLUnstructuredGridReader.h>
@@ -32,6 +35,7 @@
 #include "tetblend/core/error.h"
 #include "tetblend/meshing/atomic_file.h"
 #include "text_parsing.h"
+#include "vtk_xml_bounds.h"
 
 namespace tetblend::detail {
 namespace {
@@ -81,8 +85,26 @@ vtkSmartPointer<Reader> runReader(const std::string& path, const char* kind) {
   if (reader->CanReadFile(path.c_str()) == 0) {
     throw InputError(path + ": not a VTK XML " + kind + " file (or unreadable): check the file");
   }
+  checkVtkXmlBounds(path, readFileBytes(path));
   reader->SetFileName(path.c_str());
-  reader->Update();
+  // The header pass creates the decompressor, which reports through its own
+  // events (unobserved, VTK prints them): observe it before the data pass.
+  reader->UpdateInformation();
+  if (vtkXMLDataParser* parser = reader->GetXMLParser()) {
+    if (vtkDataCompressor* compressor = parser->GetCompressor()) {
+      compressor->AddObserver(vtkCommand::ErrorEvent, messages);
+      compressor->AddObserver(vtkCommand::WarningEvent, messages);
+    }
+  }
+  try {
+    reader->Update();
+  } catch (const std::bad_alloc&) {
+    // A size VTK takes from the data itself (a cell array's last offset sizes
+    // its connectivity) rather than from the header checked above.
+    throw InputError(path +
+                     ": VTK ran out of memory for the sizes the file declares: the file is "
+                     "damaged, or too large for this machine");
+  }
   if (!messages->text.empty() || reader->GetErrorCode() != 0) {
     throw InputError(path + ": VTK could not read the file (" + messages->text +
                      "): the file is damaged or truncated");

@@ -343,6 +343,62 @@ TEST(SurfaceIo, PlyListLengthThatIsNotACountIsRefused) {
   }
 }
 
+// Issue 11 (fuzzing, fuzz_ply): a face index of a float-typed list that was
+// NaN or beyond int was converted to int (undefined behaviour, an abort under
+// UBSan), a fraction was truncated to a vertex, and a list length of -1e300
+// was converted to long long for the message.
+TEST(SurfaceIo, PlyFloatIndexThatIsNotAVertexNumberIsRefused) {
+  const struct {
+    float length;
+    float index;  // the third corner; the first two are 0 and 1
+    const char* expected;
+  } cases[] = {
+      {3.0f, std::nanf(""), "face 0 (0-based): index nan out of range 0..2"},
+      {3.0f, 1e30f, "face 0 (0-based): index 1.0000000150474662e+30 out of range 0..2"},
+      {3.0f, -1.0f, "face 0 (0-based): index -1 out of range 0..2"},
+      {3.0f, 1.5f, "face 0 (0-based): index 1.5 is not a whole number"},
+      {-1e30f, 0.0f, "negative list length"},
+  };
+  TempDir dir;
+  for (const auto& c : cases) {
+    SCOPED_TRACE(c.expected);
+    io_test::ByteBuilder b(true);
+    b.text(
+        "ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\nproperty "
+        "float y\nproperty float z\nelement face 1\nproperty list float float vertex_indices\n"
+        "end_header\n");
+    for (int v = 0; v < 3; ++v) b.put(float(v == 1)).put(float(v == 2)).put(0.0f);
+    b.put(c.length).put(0.0f).put(1.0f).put(c.index);
+    writeText(dir.file("float.ply"), b.bytes());
+    const std::string message = messageOf(dir.file("float.ply"));
+    EXPECT_NE(message.find("float.ply: byte offset "), std::string::npos) << message;
+    EXPECT_NE(message.find(c.expected), std::string::npos) << message;
+  }
+}
+
+// Issue 11 (fuzzing, fuzz_ply): the rows of an element without properties
+// were counted one by one, 2^31 of them in a binary file (a 10 s timeout),
+// and in ascii each took the next data line, misreading the file.
+TEST(SurfaceIo, PlyElementWithoutPropertiesHoldsNoRows) {
+  const std::string header =
+      "element vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+      "element empty 2147483647\nelement face 1\nproperty list uchar int vertex_indices\n"
+      "end_header\n";
+  io_test::ByteBuilder ascii(true), binary(true);
+  ascii.text("ply\nformat ascii 1.0\n" + header + "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
+  binary.text("ply\nformat binary_little_endian 1.0\n" + header);
+  for (int v = 0; v < 3; ++v) binary.put(float(v == 1)).put(float(v == 2)).put(0.0f);
+  binary.put(std::uint8_t{3}).put(std::int32_t{0}).put(std::int32_t{1}).put(std::int32_t{2});
+  TempDir dir;
+  for (const auto* builder : {&ascii, &binary}) {
+    writeText(dir.file("empty.ply"), builder->bytes());
+    const SurfaceMesh mesh = readSurface(dir.file("empty.ply"));
+    ASSERT_EQ(mesh.triangles.rows(), 1);
+    EXPECT_EQ(mesh.triangles.row(0), Eigen::RowVector3i(0, 1, 2));
+    EXPECT_EQ(mesh.vertices.rows(), 3);
+  }
+}
+
 // Issue 11, item 3: tokens quoted in errors went to the terminal verbatim,
 // control bytes and megabytes included.
 TEST(SurfaceIo, QuotedTokensAreEscapedAndShortened) {

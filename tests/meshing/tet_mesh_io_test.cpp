@@ -168,6 +168,16 @@ TEST(TetMeshIo, MalformedFilesThrowInputErrorNamingLineAndValue) {
       {"a.mesh", "Dimension 3\nVertices 2\n0 0 0 0\n1 1", "a.mesh:4: file ends before vertex 1"},
       {"a.mesh", "Dimension 3\nVertices 2\n0 0 0 0\n1 1 1\n",
        "a.mesh:4: file ends before the reference of vertex 1"},
+      // Issue 11 (fuzzing, fuzz_medit): a second section replaced the first,
+      // leaving tets that refer to vertices that no longer exist.
+      {"a.mesh",
+       "Dimension 3\nVertices 4\n0 0 0 0 1 0 0 0 0 1 0 0 0 0 1 0\nTetrahedra 1\n1 2 3 4 0\n"
+       "Vertices 1\n0 0 0 0\n",
+       "a.mesh:6: a second Vertices section (first on line 2): a file holds one"},
+      {"a.mesh",
+       "Dimension 3\nVertices 4\n0 0 0 0 1 0 0 0 0 1 0 0 0 0 1 0\nTetrahedra 1\n1 2 3 4 0\n"
+       "Tetrahedra 0\n",
+       "a.mesh:6: a second Tetrahedra section (first on line 4): a file holds one"},
   };
   expectMessages(cases);
 }

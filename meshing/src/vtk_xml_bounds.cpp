@@ -1,0 +1,174 @@
+#include "vtk_xml_bounds.h"
+
+#include <cstdint>
+#include <string_view>
+#include <vector>
+
+#include "tetblend/core/error.h"
+#include "text_parsing.h"
+
+namespace tetblend::detail {
+namespace {
+
+// Largest uncompressed/compressed ratio of one block: deflate (zlib) cannot
+// exceed 1032:1 and LZ4 255:1; LZMA has no tight bound, so other compressors
+// get a generous one.
+constexpr std::uint64_t kZlibRatio = 1032;
+constexpr std::uint64_t kLz4Ratio = 256;
+constexpr std::uint64_t kOtherRatio = 1ULL << 16;
+
+constexpr const char* kCountAttributes[] = {"NumberOfPoints", "NumberOfCells",  "NumberOfVerts",
+                                            "NumberOfLines",  "NumberOfStrips", "NumberOfPolys"};
+
+[[noreturn]] void damaged(const std::string& path, const std::string& what) {
+  throw InputError(path + ": " + what + ": the file is damaged or truncated");
+}
+
+// The value of attribute `name` in the tag that starts at `tag`, or "".
+std::string_view attribute(std::string_view text, std::size_t tag, std::string_view name) {
+  const std::size_t end = text.find('>', tag);
+  const std::string_view element =
+      text.substr(tag, end == std::string_view::npos ? end : end - tag);
+  const std::string key = " " + std::string(name) + "=\"";
+  const std::size_t at = element.find(key);
+  if (at == std::string_view::npos) return {};
+  const std::size_t first = at + key.size();
+  const std::size_t last = element.find('"', first);
+  return element.substr(first, last == std::string_view::npos ? last : last - first);
+}
+
+// A decimal attribute value; values beyond 2^64 count as the largest.
+std::uint64_t decimal(std::string_view value) {
+  std::uint64_t n = 0;
+  for (const char c : value) {
+    if (c < '0' || c > '9') break;
+    const auto digit = static_cast<std::uint64_t>(c - '0');
+    if (n > (UINT64_MAX - digit) / 10) return UINT64_MAX;
+    n = 10 * n + digit;
+  }
+  return n;
+}
+
+// Decoded bytes of base64 text from `text`, skipping whitespace and padding,
+// up to `limit` bytes.
+std::string base64Prefix(std::string_view text, std::size_t limit) {
+  static const std::string_view kAlphabet =
+      "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  std::string out;
+  std::uint32_t bits = 0;
+  int count = 0;
+  for (const char c : text) {
+    if (out.size() >= limit || c == '<' || c == '_') break;
+    const std::size_t value = kAlphabet.find(c);
+    if (value == std::string_view::npos) continue;
+    bits = (bits << 6) | static_cast<std::uint32_t>(value);
+    if (++count == 4) {
+      for (int shift = 16; shift >= 0; shift -= 8) out += static_cast<char>((bits >> shift) & 0xff);
+      bits = 0;
+      count = 0;
+    }
+  }
+  return out;
+}
+
+struct Layout {
+  std::size_t word = 4;  // header_type UInt32 or UInt64
+  bool bigEndian = false;
+  std::uint64_t ratio = kZlibRatio;
+};
+
+std::uint64_t word(std::string_view bytes, std::size_t index, const Layout& layout) {
+  std::uint64_t value = 0;
+  for (std::size_t i = 0; i < layout.word; ++i) {
+    const std::size_t at = index * layout.word + (layout.bigEndian ? i : layout.word - 1 - i);
+    value = (value << 8) | static_cast<unsigned char>(bytes[at]);
+  }
+  return value;
+}
+
+// Checks the compression header at the start of `header` (decoded bytes);
+// `room` bytes (decoded) follow the header's start in the file.
+void checkBlockHeader(const std::string& path, std::string_view header, std::uint64_t room,
+                      const Layout& layout) {
+  if (header.size() < 3 * layout.word) return;  // VTK reports the short header itself
+  const std::uint64_t blocks = word(header, 0, layout);
+  if (blocks > room / layout.word) {
+    damaged(path, "a compressed array declares " + std::to_string(blocks) + " blocks in " +
+                      std::to_string(room) + " bytes");
+  }
+  const std::uint64_t blockSize = word(header, 1, layout);
+  const std::uint64_t lastSize = word(header, 2, layout);
+  if (blockSize / layout.ratio > room || lastSize / layout.ratio > room) {
+    damaged(path, "a compressed array declares blocks of " + std::to_string(blockSize) +
+                      " bytes in " + std::to_string(room) + " bytes");
+  }
+  const std::size_t listed = std::min<std::uint64_t>(blocks, header.size() / layout.word - 3);
+  for (std::size_t b = 0; b < listed; ++b) {
+    const std::uint64_t compressed = word(header, 3 + b, layout);
+    const std::uint64_t size = b + 1 == blocks && lastSize != 0 ? lastSize : blockSize;
+    if (compressed > room || size / layout.ratio > compressed) {
+      damaged(path, "compressed block " + std::to_string(b) + " of " + std::to_string(compressed) +
+                        " bytes declares " + std::to_string(size) + " bytes uncompressed");
+    }
+  }
+}
+
+}  // namespace
+
+void checkVtkXmlBounds(const std::string& path, const std::string& bytes) {
+  const std::string_view text(bytes);
+  const std::size_t appended = text.find("<AppendedData");
+  const std::string_view xml = text.substr(0, appended);
+  const std::size_t file = xml.find("<VTKFile");
+  if (file == std::string_view::npos) return;  // VTK refuses it itself
+  const std::string_view compressor = attribute(xml, file, "compressor");
+  Layout layout;
+  layout.word = attribute(xml, file, "header_type") == "UInt64" ? 8 : 4;
+  layout.bigEndian = attribute(xml, file, "byte_order") == "BigEndian";
+  layout.ratio = compressor == "vtkZLibDataCompressor"  ? kZlibRatio
+                 : compressor == "vtkLZ4DataCompressor" ? kLz4Ratio
+                                                        : kOtherRatio;
+  const std::uint64_t limit = bytes.size() * (compressor.empty() ? 1 : layout.ratio);
+  for (const char* name : kCountAttributes) {
+    const std::string key = std::string(" ") + name + "=\"";
+    for (std::size_t at = xml.find(key); at != std::string_view::npos; at = xml.find(key, at + 1)) {
+      const std::uint64_t count = decimal(xml.substr(at + key.size()));
+      if (count > limit) {
+        damaged(path, std::string(name) + " " + std::to_string(count) + " is more than its " +
+                          std::to_string(bytes.size()) + " bytes can hold");
+      }
+    }
+  }
+  if (compressor.empty()) return;
+  // Appended data starts after the '_' that follows the AppendedData tag.
+  const std::size_t underscore =
+      appended == std::string_view::npos ? appended : text.find('_', appended);
+  const std::size_t data = underscore == std::string_view::npos ? text.size() : underscore + 1;
+  const bool rawAppended =
+      appended != std::string_view::npos && attribute(text, appended, "encoding") == "raw";
+  const std::size_t maxHeader = 3 * layout.word + 64 * layout.word;  // enough blocks to judge
+  for (std::size_t tag = xml.find("<DataArray"); tag != std::string_view::npos;
+       tag = xml.find("<DataArray", tag + 1)) {
+    const std::string_view format = attribute(xml, tag, "format");
+    std::size_t start = 0;
+    if (format == "appended") {
+      const std::uint64_t offset = decimal(attribute(xml, tag, "offset"));
+      if (offset >= text.size() - data) continue;  // VTK reports the bad offset itself
+      start = data + offset;
+    } else if (format == "binary") {
+      start = xml.find('>', tag);
+      if (start == std::string_view::npos) continue;
+      ++start;
+    } else {
+      continue;
+    }
+    const std::uint64_t left = text.size() - start;
+    if (format == "appended" && rawAppended) {
+      checkBlockHeader(path, text.substr(start, maxHeader), left, layout);
+    } else {
+      checkBlockHeader(path, base64Prefix(text.substr(start), maxHeader), left / 4 * 3, layout);
+    }
+  }
+}
+
+}  // namespace tetblend::detail
