@@ -1,14 +1,26 @@
 // tetblend batch: jobs in parallel, a failing job reported while the others
-// are written, resume skipping finished jobs, summary and collection files.
+// are written, resume skipping finished jobs (also after a real kill -9),
+// summary and collection files.
 
 #include <fcntl.h>
+#include <signal.h>
+#include <spawn.h>
 #include <sys/file.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
+#include <chrono>
+#include <functional>
 #include <nlohmann/json.hpp>
+#include <random>
+#include <regex>
+#include <set>
 #include <thread>
 
 #include "apps_test_support.h"
+#include "test_seed.h"
+
+extern char** environ;
 
 namespace tetblend::apps_test {
 namespace {
@@ -64,10 +76,12 @@ class BatchCommand : public ::testing::Test {
     dir_ = scratchDir();
     model_ = prepareBar(dir_);
   }
-  fs::path writeSpec(const json& jobs) const {
-    const json spec{{"model", "bar.tbm"}, {"output_dir", "out"}, {"threads", 2}, {"jobs", jobs}};
-    std::ofstream(dir_ / "spec.json") << spec.dump(2);
-    return dir_ / "spec.json";
+  fs::path writeSpec(const json& jobs, const std::string& outputDir = "out") const {
+    const json spec{
+        {"model", "bar.tbm"}, {"output_dir", outputDir}, {"threads", 2}, {"jobs", jobs}};
+    const fs::path path = dir_ / ("spec_" + outputDir + ".json");
+    std::ofstream(path) << spec.dump(2);
+    return path;
   }
   json summary() const { return json::parse(slurp(dir_ / "out" / "summary.json")); }
   /// A finished batch of two jobs, a and b, with their .vtu write times.
@@ -224,6 +238,151 @@ TEST_F(BatchCommand, RunKilledBeforeTheSummaryKeepsItsFinishedJobs) {
   EXPECT_FALSE(s["jobs"][1]["skipped_this_run"].get<bool>());
   EXPECT_EQ(fs::last_write_time(dir_ / "out" / "a.vtu"), timeA);
   EXPECT_NE(fs::last_write_time(dir_ / "out" / "b.vtu"), timeB);
+}
+
+/// Starts `program` with `args` as a child process (posix_spawn), its stdin,
+/// stdout and stderr on /dev/null; returns its pid, -1 if it did not start.
+pid_t startProgram(const std::string& program, const std::vector<std::string>& args) {
+  std::vector<std::string> words{program};
+  words.insert(words.end(), args.begin(), args.end());
+  std::vector<char*> argv;
+  for (std::string& w : words) argv.push_back(w.data());
+  argv.push_back(nullptr);
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  for (const int fd : {STDIN_FILENO, STDOUT_FILENO, STDERR_FILENO})
+    posix_spawn_file_actions_addopen(&actions, fd, "/dev/null",
+                                     fd == STDIN_FILENO ? O_RDONLY : O_WRONLY, 0);
+  pid_t pid = -1;
+  const int rc = ::posix_spawn(&pid, program.c_str(), &actions, nullptr, argv.data(), environ);
+  posix_spawn_file_actions_destroy(&actions);
+  return rc == 0 ? pid : -1;
+}
+
+/// Names of the jobs a batch journal records as finished: its lines that
+/// parse, as the resumed run reads them (a line cut by the kill names none;
+/// a journal not yet written, none).
+std::set<std::string> journaledJobs(const fs::path& journal) {
+  std::set<std::string> names;
+  std::istringstream text(slurp(journal));
+  for (std::string line; std::getline(text, line);) {
+    const json record = json::parse(line, nullptr, false);
+    if (!record.is_discarded()) names.insert(record["name"].get<std::string>());
+  }
+  return names;
+}
+
+/// A batch of kJobCount blends killed with SIGKILL at chosen moments, each in
+/// its own output directory, then re-run, and compared with an uninterrupted
+/// run in "reference".
+class KilledBatch : public BatchCommand {
+ protected:
+  // Enough blends that the kills at 0, 1 and half the journal lines land
+  // with jobs still to do; few enough that the test takes seconds.
+  static constexpr std::size_t kJobCount = 16;
+  // Short beside one blend, so the kill lands close to the moment polled for.
+  static constexpr std::chrono::milliseconds kPollInterval{1};
+
+  static json jobs() {
+    json list = json::array();
+    for (std::size_t i = 0; i < kJobCount; ++i) {
+      const double t = static_cast<double>(i) / kJobCount;
+      list.push_back({{"name", "job" + std::to_string(i)}, {"weights", {t, 1.0 - t}}});
+    }
+    return list;
+  }
+
+  fs::path journal(const std::string& outputDir) const {
+    return dir_ / outputDir / ".tetblend-batch.journal";
+  }
+
+  /// True once the journal of `outputDir` exists and holds `lines` whole lines.
+  std::function<bool()> journalHolds(const std::string& outputDir, std::size_t lines) const {
+    return [path = journal(outputDir), lines] {
+      if (!fs::exists(path)) return false;
+      const std::string text = slurp(path);
+      return static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n')) >= lines;
+    };
+  }
+
+  /// Starts the batch into `outputDir`, polls `moment` and sends SIGKILL once
+  /// it holds. Returns whether the kill ended the run (false: the batch ended
+  /// first; that fails the test unless `mayFinishFirst`).
+  bool killWhen(const std::string& outputDir, const std::function<bool()>& moment,
+                bool mayFinishFirst = false) const {
+    const pid_t pid = startProgram(TETBLEND_EXE, {"batch", writeSpec(jobs(), outputDir).string()});
+    EXPECT_GT(pid, 0) << "cannot start " << TETBLEND_EXE;
+    if (pid <= 0) return false;
+    int status = 0;
+    while (!moment()) {
+      if (::waitpid(pid, &status, WNOHANG) == pid) {
+        EXPECT_TRUE(mayFinishFirst) << "the batch ended before the kill, status " << status;
+        return false;
+      }
+      std::this_thread::sleep_for(kPollInterval);
+    }
+    ::kill(pid, SIGKILL);
+    EXPECT_EQ(::waitpid(pid, &status, 0), pid);
+    return WIFSIGNALED(status) && WTERMSIG(status) == SIGKILL;
+  }
+
+  /// Re-runs the killed batch of `outputDir` to completion and checks that it
+  /// skips exactly the jobs `finished` before the kill, redoes the others, and
+  /// leaves the outputs of an uninterrupted run, byte for byte.
+  void expectResumeCompletes(const std::string& outputDir,
+                             const std::set<std::string>& finished) const {
+    const fs::path out = dir_ / outputDir;
+    const RunResult r = tetblend({"batch", writeSpec(jobs(), outputDir).string()}, dir_);
+    ASSERT_EQ(r.code, 0) << r.err;
+    const json s = json::parse(slurp(out / "summary.json"));
+    ASSERT_EQ(s["jobs"].size(), kJobCount);
+    for (const json& job : s["jobs"]) {
+      const std::string name = job["name"].get<std::string>();
+      EXPECT_EQ(job["status"], "done") << name;
+      EXPECT_EQ(job["skipped_this_run"].get<bool>(), finished.count(name) == 1) << name;
+      for (const char* extension : {".vtu", ".vtp"}) {
+        const std::string file = name + extension;
+        ASSERT_TRUE(fs::exists(out / file)) << file;
+        EXPECT_TRUE(slurp(out / file) == slurp(dir_ / "reference" / file))
+            << file << " differs from the uninterrupted run's";
+      }
+    }
+    const auto rows = parseCsv(slurp(out / "summary.csv"));
+    ASSERT_EQ(rows.size(), kJobCount + 1);  // header + jobs
+    for (std::size_t i = 1; i < rows.size(); ++i) EXPECT_EQ(rows[i][2], "done") << rows[i][0];
+    const std::regex temporary(R"(\..+\.[0-9]+\.tmp)");  // writeFileAtomically's
+    for (const std::string& name : listDir(out))
+      EXPECT_FALSE(std::regex_match(name, temporary)) << name << " was left behind";
+  }
+};
+
+// A real kill -9 (not a simulated one) at a job boundary or anywhere: the
+// re-run redoes only the jobs the journal does not hold, and the result is
+// the uninterrupted run's.
+TEST_F(KilledBatch, ResumeAfterKill9RedoesOnlyUnfinishedJobsAndMatchesAnUninterruptedRun) {
+  const auto start = std::chrono::steady_clock::now();
+  const RunResult reference = tetblend({"batch", writeSpec(jobs(), "reference").string()}, dir_);
+  ASSERT_EQ(reference.code, 0) << reference.err;
+  const std::chrono::duration<double> runTime = std::chrono::steady_clock::now() - start;
+
+  for (const std::size_t lines : {std::size_t{0}, std::size_t{1}, kJobCount / 2}) {
+    const std::string outputDir = "killed_at_" + std::to_string(lines);
+    SCOPED_TRACE(outputDir);
+    EXPECT_TRUE(killWhen(outputDir, journalHolds(outputDir, lines)));
+    const std::set<std::string> finished = journaledJobs(journal(outputDir));
+    EXPECT_GE(finished.size(), lines);
+    expectResumeCompletes(outputDir, finished);
+  }
+
+  // Any moment of a run, the start and the writes inside a job included.
+  std::mt19937 rng(test_seed::seedFor(
+      ::testing::UnitTest::GetInstance()->current_test_info()->name(), 20240917u));
+  const double delay = test_seed::uniform(rng, 0.0, runTime.count());
+  SCOPED_TRACE("killed " + std::to_string(delay) + " s after the start");
+  const auto killAt = std::chrono::steady_clock::now() + std::chrono::duration<double>(delay);
+  killWhen("killed_at_random", [killAt] { return std::chrono::steady_clock::now() >= killAt; },
+           true);
+  expectResumeCompletes("killed_at_random", journaledJobs(journal("killed_at_random")));
 }
 
 TEST_F(BatchCommand, BadSpecIsOneLineError) {
