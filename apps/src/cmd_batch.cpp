@@ -20,9 +20,8 @@
 // Concurrency: the blends take turns behind a mutex (each is parallel over
 // tets inside). The stitch itself is documented and tested safe for
 // concurrent use; whether concurrent blends are faster here is not measured
-// yet (issue 13). The quality
-// figures and the compressed output files of different jobs are made
-// concurrently by the job workers.
+// yet (issue 13). The quality figures and the compressed output files of
+// different jobs are made concurrently by the job workers.
 
 #include <atomic>
 #include <chrono>
