@@ -26,6 +26,7 @@
 #include <atomic>
 #include <chrono>
 #include <filesystem>
+#include <iostream>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -132,6 +133,20 @@ void writeSummaries(const BatchSpec& spec, const std::vector<std::string>& finge
   writeText((fs::path(spec.outputDir) / "summary.csv").string(), csv.str());
 }
 
+// The first line of a run: how many jobs run, how many a re-run skips and
+// why, and where every output goes (output_dir may point anywhere).
+std::string runNote(const BatchSpec& spec, std::size_t pending) {
+  const std::size_t skipped = spec.jobs.size() - pending;
+  std::string line = "batch: " + std::to_string(pending) + " of " +
+                     std::to_string(spec.jobs.size()) + " jobs to run";
+  if (skipped > 0) {
+    line += " (" + std::to_string(skipped) +
+            " done by an earlier run: same model file, method, weights and options, files "
+            "present)";
+  }
+  return line + ", writing into " + fs::absolute(spec.outputDir).lexically_normal().string();
+}
+
 void runBatch(const BatchArgs& a) {
   const BatchSpec spec = readBatchSpec(a.spec);
   const std::vector<std::string> formats = parseSurfaceFormats(spec.surfaceFormats);
@@ -176,6 +191,9 @@ void runBatch(const BatchArgs& a) {
       pendingJobs.push_back(i);
     }
   }
+
+  // On stdout: stderr stays the one error line of a failing batch.
+  if (!a.quiet) std::cout << "tetblend: " << runNote(spec, pendingJobs.size()) << std::endl;
 
   Journal journal(spec.outputDir, kept);
   if (!pendingJobs.empty()) {
@@ -275,7 +293,8 @@ void registerBatch(CLI::App& root) {
       "Run the blend jobs of a JSON spec over one model, in parallel. Writes <output_dir>/<job>"
       ".vtu and .vtp per job, batch.pvd (all finished jobs, time = job index), summary.json and "
       "summary.csv (quality figures per job). A failing job is reported and the others go on; "
-      "the exit code is non-zero if any failed. A second run on the same output_dir while one "
+      "the exit code is non-zero if any failed. The first line on stdout says how many jobs run, "
+      "how many a re-run skips and why, and the output folder. A second run on the same output_dir while one "
       "is running is refused. Re-running (also after a kill) skips jobs that the journal "
       "<output_dir>/.tetblend-batch.journal records as done with the same fingerprint (model "
       "bytes, method, weights, options) whose files exist. "

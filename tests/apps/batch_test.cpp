@@ -144,7 +144,14 @@ TEST_F(BatchCommand, SecondRunSkipsFinishedJobsAndRerunsEditedOnes) {
   const auto timeA = run.timeA;
   const auto timeB = run.timeB;
 
-  ASSERT_EQ(tetblend({"batch", spec.string()}, dir_).code, 0);
+  // The first line says what runs, what is skipped and why, and where.
+  const std::string into = ", writing into " + (fs::absolute(dir_) / "out").string() + "\n";
+  RunResult r = tetblend({"batch", spec.string()}, dir_);
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(r.out.rfind("tetblend: batch: 0 of 2 jobs to run (2 done by an earlier run: same "
+                        "model file, method, weights and options, files present)" + into, 0),
+            0u)
+      << r.out;
   json s = summary();
   EXPECT_TRUE(s["jobs"][0]["skipped_this_run"].get<bool>());
   EXPECT_TRUE(s["jobs"][1]["skipped_this_run"].get<bool>());
@@ -153,7 +160,10 @@ TEST_F(BatchCommand, SecondRunSkipsFinishedJobsAndRerunsEditedOnes) {
 
   jobs[1]["weights"] = {0, 0.5};
   spec = writeSpec(jobs);
-  ASSERT_EQ(tetblend({"batch", spec.string()}, dir_).code, 0);
+  r = tetblend({"batch", spec.string()}, dir_);
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(r.out.rfind("tetblend: batch: 1 of 2 jobs to run (1 done by an earlier run", 0), 0u)
+      << r.out;
   s = summary();
   EXPECT_TRUE(s["jobs"][0]["skipped_this_run"].get<bool>());
   EXPECT_FALSE(s["jobs"][1]["skipped_this_run"].get<bool>());
