@@ -5,6 +5,8 @@
 #   ./dev.sh demo    set up, build, and run the main job on the bundled samples
 #   ./dev.sh test    set up, build, and run the whole test suite with ctest
 #   ./dev.sh asan    set up, build with ASan+UBSan into build/asan, run the suite
+#                    (without the Python module: Debian's python3 cannot load
+#                    an ASan-instrumented extension)
 #   ./dev.sh bench   set up, build, and run the benchmarks (figures for README)
 #   ./dev.sh fuzz [seconds]  set up, build the reader fuzzers (clang, libFuzzer,
 #                    ASan+UBSan) into build/fuzz, replay their seeds and
@@ -32,7 +34,7 @@ case "${1:-}" in
   asan)
     bash setup.sh
     build build/asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DTETBLEND_SANITIZE=ON \
-      -DTETBLEND_BUILD_BENCHMARKS=OFF
+      -DTETBLEND_BUILD_BENCHMARKS=OFF -DTETBLEND_BUILD_PYTHON=OFF
     ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
       ctest --test-dir build/asan --output-on-failure --parallel "$jobs" ;;
   bench)
