@@ -15,6 +15,7 @@ PyObject* errorType = nullptr;
 PyObject* inputErrorType = nullptr;
 PyObject* domainErrorType = nullptr;
 PyObject* numericalErrorType = nullptr;
+PyObject* resourceErrorType = nullptr;
 
 PyObject* newException(py::module_& module, const char* name, py::tuple bases, const char* doc) {
   const std::string qualified = std::string("tetblend.") + name;
@@ -41,6 +42,10 @@ void registerErrors(py::module_& module) {
   numericalErrorType = newException(module, "NumericalError",
                                     py::make_tuple(base, py::handle(PyExc_ArithmeticError)),
                                     "A solver did not reach its goal.");
+  resourceErrorType =
+      newException(module, "ResourceError", py::make_tuple(base, py::handle(PyExc_MemoryError)),
+                   "The machine lacks the memory the work needs; the message says how much "
+                   "and what to change.");
   py::register_exception_translator([](std::exception_ptr p) {
     try {
       if (p) std::rethrow_exception(p);
@@ -50,6 +55,8 @@ void registerErrors(py::module_& module) {
       PyErr_SetString(domainErrorType, e.what());
     } catch (const NumericalError& e) {
       PyErr_SetString(numericalErrorType, e.what());
+    } catch (const ResourceError& e) {
+      PyErr_SetString(resourceErrorType, e.what());
     } catch (const Error& e) {
       PyErr_SetString(errorType, e.what());
     }

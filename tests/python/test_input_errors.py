@@ -82,6 +82,8 @@ def test_every_tetblend_error_is_an_error_and_input_errors_are_value_errors():
     assert issubclass(tetblend.InputError, ValueError)
     assert issubclass(tetblend.DomainError, ValueError)
     assert issubclass(tetblend.NumericalError, tetblend.Error)
+    assert issubclass(tetblend.ResourceError, tetblend.Error)
+    assert issubclass(tetblend.ResourceError, MemoryError)
 
 
 def test_a_missing_file_is_an_input_error_naming_it(tmp_path):
