@@ -1,5 +1,6 @@
 #include "vtk_xml_bounds.h"
 
+#include <algorithm>
 #include <cstdint>
 #include <string_view>
 #include <vector>
@@ -17,8 +18,9 @@ constexpr std::uint64_t kZlibRatio = 1032;
 constexpr std::uint64_t kLz4Ratio = 256;
 constexpr std::uint64_t kOtherRatio = 1ULL << 16;
 
-constexpr const char* kCountAttributes[] = {"NumberOfPoints", "NumberOfCells",  "NumberOfVerts",
-                                            "NumberOfLines",  "NumberOfStrips", "NumberOfPolys"};
+constexpr const char* kCountAttributes[] = {"NumberOfPoints", "NumberOfCells", "NumberOfVerts",
+                                            "NumberOfLines",  "NumberOfStrips", "NumberOfPolys",
+                                            "NumberOfTuples"};
 
 [[noreturn]] void damaged(const std::string& path, const std::string& what) {
   throw InputError(path + ": " + what + ": the file is damaged or truncated");
@@ -98,6 +100,13 @@ void checkBlockHeader(const std::string& path, std::string_view header, std::uin
   }
   const std::uint64_t blockSize = word(header, 1, layout);
   const std::uint64_t lastSize = word(header, 2, layout);
+  // VTK 9.1 computes the array's size as blocks × blockSize − blockSize +
+  // lastSize: with no block and a partial last block that wraps around and
+  // VTK reads a block table it never allocated.
+  if (blocks == 0 && lastSize != 0) {
+    damaged(path, "a compressed array declares no block but a last block of " +
+                      std::to_string(lastSize) + " bytes");
+  }
   if (blockSize / layout.ratio > room || lastSize / layout.ratio > room) {
     damaged(path, "a compressed array declares blocks of " + std::to_string(blockSize) +
                       " bytes in " + std::to_string(room) + " bytes");
@@ -129,6 +138,7 @@ void checkVtkXmlBounds(const std::string& path, const std::string& bytes) {
                  : compressor == "vtkLZ4DataCompressor" ? kLz4Ratio
                                                         : kOtherRatio;
   const std::uint64_t limit = bytes.size() * (compressor.empty() ? 1 : layout.ratio);
+  std::uint64_t largestCount = 0;
   for (const char* name : kCountAttributes) {
     const std::string key = std::string(" ") + name + "=\"";
     for (std::size_t at = xml.find(key); at != std::string_view::npos; at = xml.find(key, at + 1)) {
@@ -137,6 +147,18 @@ void checkVtkXmlBounds(const std::string& path, const std::string& bytes) {
         damaged(path, std::string(name) + " " + std::to_string(count) + " is more than its " +
                           std::to_string(bytes.size()) + " bytes can hold");
       }
+      largestCount = std::max(largestCount, count);
+    }
+  }
+  // VTK sizes an array as tuples × components before reading its values.
+  const std::string componentsKey = " NumberOfComponents=\"";
+  for (std::size_t at = xml.find(componentsKey); at != std::string_view::npos;
+       at = xml.find(componentsKey, at + 1)) {
+    const std::uint64_t components = decimal(xml.substr(at + componentsKey.size()));
+    if (components > limit || (components > 0 && largestCount > limit / components)) {
+      damaged(path, "NumberOfComponents " + std::to_string(components) + " for " +
+                        std::to_string(largestCount) + " tuples is more than its " +
+                        std::to_string(bytes.size()) + " bytes can hold");
     }
   }
   if (compressor.empty()) return;
@@ -151,7 +173,12 @@ void checkVtkXmlBounds(const std::string& path, const std::string& bytes) {
        tag = xml.find("<DataArray", tag + 1)) {
     const std::string_view format = attribute(xml, tag, "format");
     std::size_t start = 0;
-    if (format == "appended") {
+    // VTK reads an array with an offset from the appended data unless its
+    // format says otherwise, also when the format attribute is missing.
+    const bool inAppended =
+        format == "appended" ||
+        (format != "binary" && format != "ascii" && !attribute(xml, tag, "offset").empty());
+    if (inAppended) {
       const std::uint64_t offset = decimal(attribute(xml, tag, "offset"));
       if (offset >= text.size() - data) continue;  // VTK reports the bad offset itself
       start = data + offset;
@@ -163,7 +190,7 @@ void checkVtkXmlBounds(const std::string& path, const std::string& bytes) {
       continue;
     }
     const std::uint64_t left = text.size() - start;
-    if (format == "appended" && rawAppended) {
+    if (inAppended && rawAppended) {
       checkBlockHeader(path, text.substr(start, maxHeader), left, layout);
     } else {
       checkBlockHeader(path, base64Prefix(text.substr(start), maxHeader), left / 4 * 3, layout);

@@ -106,6 +106,25 @@ TEST(VtkXmlBounds, DeclaredSizesBeyondTheFileAreRefusedBeforeVtkAllocates) {
       // read past the end of the file (found by fuzz_vtp, fuzz_vtu).
       {"no appended data", "a.vtu", [](std::string& b) { b.erase(b.find("<AppendedData")); },
        "a.vtu: VTK could not read the file"},
+      // Found by fuzz_vtu: an array whose format attribute is missing is
+      // still read from the appended data, so its header must be checked.
+      {"no format attribute", "a.vtu",
+       [](std::string& b) {
+         replaceOnce(b, "format=\"appended\"", "fromat=\"appended\"");
+         setWord(b, firstHeader(b) + 12, kHugeBlock);
+       },
+       "a.vtu: compressed block 0 of 2147483632 bytes declares "},
+      // Found by fuzz_vtu: VTK sized the array as tuples × components (5e11
+      // components asked for 4 TB and spun for minutes).
+      {"components", "a.vtp",
+       [](std::string& b) {
+         replaceOnce(b, "NumberOfComponents=\"3\"", "NumberOfComponents=\"508075688772\"");
+       },
+       "a.vtp: NumberOfComponents 508075688772 for 4 tuples is more than its "},
+      // Found by fuzz_vtu: no block but a partial last block; VTK's size
+      // arithmetic wrapped around and it read a block table it never made.
+      {"no block", "a.vtu", [](std::string& b) { setWord(b, firstHeader(b), 0); },
+       "a.vtu: a compressed array declares no block but a last block of "},
       // Within what the block can inflate to, so VTK decompresses it and
       // finds the size wrong: its own message must reach the error line.
       {"wrong size", "a.vtp",
