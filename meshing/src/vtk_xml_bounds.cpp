@@ -163,8 +163,18 @@ void checkVtkXmlBounds(const std::string& path, const std::string& bytes) {
   }
   if (compressor.empty()) return;
   // Appended data starts after the '_' that follows the AppendedData tag.
-  const std::size_t underscore =
-      appended == std::string_view::npos ? appended : text.find('_', appended);
+  // VTK skips the first character after the tag and its white space without
+  // looking at it, so anything but '_' there shifts every header it reads.
+  std::size_t underscore = std::string_view::npos;
+  if (appended != std::string_view::npos) {
+    const std::size_t tagEnd = text.find('>', appended);
+    underscore = tagEnd == std::string_view::npos
+                     ? tagEnd
+                     : text.find_first_not_of(" \t\r\n", tagEnd + 1);
+    if (underscore != std::string_view::npos && text[underscore] != '_') {
+      damaged(path, "the appended data does not start with '_'");
+    }
+  }
   const std::size_t data = underscore == std::string_view::npos ? text.size() : underscore + 1;
   const bool rawAppended =
       appended != std::string_view::npos && attribute(text, appended, "encoding") == "raw";

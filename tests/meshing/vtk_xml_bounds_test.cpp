@@ -125,6 +125,10 @@ TEST(VtkXmlBounds, DeclaredSizesBeyondTheFileAreRefusedBeforeVtkAllocates) {
       // arithmetic wrapped around and it read a block table it never made.
       {"no block", "a.vtu", [](std::string& b) { setWord(b, firstHeader(b), 0); },
        "a.vtu: a compressed array declares no block but a last block of "},
+      // Found by fuzz_vtu: VTK skips the first character after the tag
+      // unseen, so a stray byte before '_' shifted every header by one.
+      {"stray byte", "a.vtu", [](std::string& b) { b.insert(firstHeader(b) - 1, "\xb2"); },
+       "a.vtu: the appended data does not start with '_'"},
       // Within what the block can inflate to, so VTK decompresses it and
       // finds the size wrong: its own message must reach the error line.
       {"wrong size", "a.vtp",
