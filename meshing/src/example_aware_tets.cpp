@@ -2,7 +2,11 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <utility>
 
+#include <tbb/parallel_for.h>
+
+#include "surface_interior.h"
 #include "tet_stellar_split.h"
 #include "tetblend/core/error.h"
 #include "tetblend/core/tet_geometry.h"
@@ -61,6 +65,48 @@ void split(const std::vector<Simplex>& simplices, CompatibleTetMeshes& meshes) {
   ++meshes.rounds;
 }
 
+// The rigid simplices of `mesh` (rigidSimplices) that leave the solid of a
+// clean example (one whose surface does not intersect itself), as what to
+// split: such an edge itself; such a face through one of its rigid edges if
+// it has one (the split frees the face too), else the face. Sorted, edges
+// first, so splitSimplices never meets a face whose edge it already split.
+std::vector<Simplex> rigidSimplicesOutside(const TetMesh& mesh, int surfaceCount,
+                                           const BoundarySimplices& boundary,
+                                           const std::vector<Vertices>& examples,
+                                           const Triangles& triangles,
+                                           const std::vector<SelfIntersections>& found) {
+  const std::vector<Simplex> rigid = rigidSimplices(mesh, surfaceCount, boundary);
+  if (rigid.empty()) return {};
+  std::vector<std::vector<Simplex>> perExample(examples.size());
+  tbb::parallel_for(std::size_t{0}, examples.size(), [&](std::size_t k) {
+    if (found[k].pairCount > 0) return;
+    const SurfaceInterior interior(examples[k], triangles);
+    for (const Simplex& simplex : rigid) {
+      const auto& v = simplex.vertices;
+      if (simplex.count == 2) {
+        if (!interior.segmentInside(v[0], v[1])) perExample[k].push_back(simplex);
+        continue;
+      }
+      if (interior.triangleInside(v[0], v[1], v[2])) continue;
+      Simplex through = simplex;
+      for (const auto& [a, b] : {std::pair{v[0], v[1]}, {v[1], v[2]}, {v[0], v[2]}}) {
+        Simplex edge;
+        edge.vertices = {a, b, 0};
+        edge.count = 2;
+        if (std::binary_search(rigid.begin(), rigid.end(), edge)) through = edge;
+      }
+      perExample[k].push_back(through);
+    }
+  });
+  std::vector<Simplex> result;
+  for (const std::vector<Simplex>& list : perExample) {
+    result.insert(result.end(), list.begin(), list.end());
+  }
+  std::sort(result.begin(), result.end());
+  result.erase(std::unique(result.begin(), result.end()), result.end());
+  return result;
+}
+
 }  // namespace
 
 std::vector<int> invertedAllSurfaceTets(const Tets& tets, int surfaceVertexCount,
@@ -92,7 +138,16 @@ CompatibleTetMeshes buildCompatibleTetMeshes(const TetMesh& rest, int surfaceVer
     meshes.selfIntersections.push_back(findSelfIntersections(example, triangles, 1));
   }
 
-  // Stage 1: all-surface tets an example inverts (no placement can help).
+  // Stage 1: rigid edges and faces that leave a clean example's solid, then
+  // all-surface tets an example inverts (no placement can help either).
+  const std::vector<Simplex> outside = rigidSimplicesOutside(
+      meshes.rest, surfaceVertexCount, boundary, exampleSurfaces, triangles,
+      meshes.selfIntersections);
+  if (!outside.empty() && options.maxRounds > 0) {
+    meshes.rigidSimplicesOutside = static_cast<int>(outside.size());
+    split(outside, meshes);
+    if (progress) progress("refine");
+  }
   for (int round = 0; round < options.maxRounds; ++round) {
     std::vector<int> bad;
     for (const Vertices& example : exampleSurfaces) {

@@ -99,6 +99,25 @@ std::vector<Simplex> simplicesToSplit(const TetMesh& mesh, int tet, int surfaceC
   return {longest};
 }
 
+std::vector<Simplex> rigidSimplices(const TetMesh& mesh, int surfaceCount,
+                                    const BoundarySimplices& boundary) {
+  std::vector<Simplex> rigid;
+  for (Eigen::Index t = 0; t < mesh.tets.rows(); ++t) {
+    const Eigen::RowVector4i corners = mesh.tets.row(t);
+    for (const auto& local : kTetEdges) {
+      const Simplex edge = makeSimplex({corners(local[0]), corners(local[1])});
+      if (edge.vertices[1] < surfaceCount && !contains(boundary.edges, edge)) rigid.push_back(edge);
+    }
+    for (const auto& local : kTetFaces) {
+      const Simplex face = makeSimplex({corners(local[0]), corners(local[1]), corners(local[2])});
+      if (face.vertices[2] < surfaceCount && !contains(boundary.faces, face)) rigid.push_back(face);
+    }
+  }
+  std::sort(rigid.begin(), rigid.end());
+  rigid.erase(std::unique(rigid.begin(), rigid.end()), rigid.end());
+  return rigid;
+}
+
 TetMesh splitSimplices(const TetMesh& mesh, const std::vector<Simplex>& simplices) {
   const Eigen::Index oldVertices = mesh.vertices.rows();
   std::vector<std::vector<int>> stars(static_cast<size_t>(oldVertices) + simplices.size());

@@ -40,6 +40,12 @@ BoundarySimplices boundarySimplices(const TetMesh& mesh);
 std::vector<Simplex> simplicesToSplit(const TetMesh& mesh, int tet, int surfaceCount,
                                       const BoundarySimplices& boundary);
 
+/// Every interior edge of `mesh` joining two surface vertices (< surfaceCount)
+/// and every interior face whose three vertices lie on the surface, once
+/// each, sorted (edges first): the simplices the example surfaces alone fix.
+std::vector<Simplex> rigidSimplices(const TetMesh& mesh, int surfaceCount,
+                                    const BoundarySimplices& boundary);
+
 /// Splits each simplex of `simplices` (distinct interior edges and faces of
 /// `mesh`, edges first) at its centroid, in order. New vertices are appended
 /// after the existing ones (a mesh with surface vertices first keeps them

@@ -14,9 +14,12 @@
 // faces are unchanged; new vertices are appended as interior vertices.
 //
 // The stages:
-//  1. all-surface tets inverted by any example are split, before any
-//     placement (milliseconds; repeated while new ones appear, at most
-//     maxRounds times);
+//  1. before any placement: interior edges and faces with all vertices on
+//     the surface that leave the solid of an example whose surface does not
+//     intersect itself (a valid tet mesh of the example covers exactly that
+//     solid; exact predicates, surface_interior.h) are split, then
+//     all-surface tets inverted by any example (repeated while new ones
+//     appear, at most maxRounds times);
 //  2. every example is placed (harmonic → ARAP → untangling,
 //     compatible_tets.h; one factorisation for all);
 //  3. while an example whose surface does not intersect itself keeps
@@ -68,6 +71,7 @@ struct CompatibleTetMeshes {
   int steinerPoints = 0;           ///< interior vertices added by refinement
   int rounds = 0;                  ///< refinement rounds performed (stages 1 and 3)
   int allSurfaceTetsInverted = 0;  ///< all-surface tets found inverted in stage 1
+  int rigidSimplicesOutside = 0;   ///< edges and faces split in stage 1 for leaving a solid
 };
 
 /// Called after each stage with a short description (for progress display).
