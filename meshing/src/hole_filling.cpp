@@ -69,8 +69,8 @@ Mesh halfedgeMesh(const SurfaceMesh& surface, const std::string& name) {
                static_cast<Mesh::size_type>(3 * surface.triangles.rows()),
                static_cast<Mesh::size_type>(surface.triangles.rows()));
   for (Eigen::Index i = 0; i < surface.vertices.rows(); ++i) {
-    mesh.add_vertex(Kernel::Point_3(surface.vertices(i, 0), surface.vertices(i, 1),
-                                    surface.vertices(i, 2)));
+    mesh.add_vertex(
+        Kernel::Point_3(surface.vertices(i, 0), surface.vertices(i, 1), surface.vertices(i, 2)));
   }
   for (Eigen::Index f = 0; f < surface.triangles.rows(); ++f) {
     const Mesh::Face_index added = mesh.add_face(Mesh::Vertex_index(surface.triangles(f, 0)),

@@ -11,6 +11,7 @@
 #include <utility>
 #include <vector>
 
+#include "test_surfaces.h"
 #include "tetblend/core/error.h"
 #include "tetblend/meshing/surface_orientation.h"
 #include "tetblend/meshing/surface_validation.h"
@@ -18,46 +19,13 @@
 namespace tetblend {
 namespace {
 
+using testing_surfaces::frustaVolume;
+using testing_surfaces::RingStack;
+using testing_surfaces::ringStack;
+
 // Volumes of unit-scale solids summed from a few hundred triangle
 // determinants, each exact to a few ulps: 1e-12 relative is ~4500 ε.
 constexpr double kVolumeRelTol = 1e-12;
-
-// A stack of regular n-gons (ring k: radius radii[k] at height heights[k],
-// vertex angles 2πi/n in every ring) joined by bands of quads, each split
-// into two triangles, outward; no caps, so the top and bottom rings are
-// holes. The quads are planar trapezoids (chords at equal angles are
-// parallel), so a band with its planar rings closed is a frustum of an
-// n-gon pyramid: the enclosed volume has a closed form.
-struct RingStack {
-  SurfaceMesh mesh;
-  int n;
-  int vertex(int ring, int i) const { return ring * n + (i % n); }
-};
-
-RingStack ringStack(int n, const std::vector<double>& radii, const std::vector<double>& heights,
-                    double saddle = 0.0) {
-  RingStack stack{{}, n};
-  const int rings = static_cast<int>(radii.size());
-  stack.mesh.vertices.resize(rings * n, 3);
-  for (int k = 0; k < rings; ++k) {
-    for (int i = 0; i < n; ++i) {
-      const double angle = 2.0 * EIGEN_PI * i / n;
-      stack.mesh.vertices.row(k * n + i) << radii[k] * std::cos(angle),
-          radii[k] * std::sin(angle), heights[k] + saddle * std::sin(2.0 * angle);
-    }
-  }
-  stack.mesh.triangles.resize(2 * (rings - 1) * n, 3);
-  int f = 0;
-  for (int k = 0; k + 1 < rings; ++k) {
-    for (int i = 0; i < n; ++i) {
-      const int a = stack.vertex(k, i), b = stack.vertex(k, i + 1);
-      const int c = stack.vertex(k + 1, i + 1), d = stack.vertex(k + 1, i);
-      stack.mesh.triangles.row(f++) << a, b, c;
-      stack.mesh.triangles.row(f++) << a, c, d;
-    }
-  }
-  return stack;
-}
 
 // The stack without the two triangles of quad i of band k (a planar hole of
 // four edges).
@@ -74,17 +42,6 @@ SurfaceMesh withoutQuads(const RingStack& stack, const std::vector<std::pair<int
     out.triangles.row(out.triangles.rows() - 1) = stack.mesh.triangles.row(f);
   }
   return out;
-}
-
-// Enclosed volume of the stack of frusta (regular n-gon areas n/2 r² sin 2π/n).
-double frustaVolume(int n, const std::vector<double>& radii, const std::vector<double>& heights) {
-  double volume = 0.0;
-  for (std::size_t k = 0; k + 1 < radii.size(); ++k) {
-    const double a1 = 0.5 * n * radii[k] * radii[k] * std::sin(2.0 * EIGEN_PI / n);
-    const double a2 = 0.5 * n * radii[k + 1] * radii[k + 1] * std::sin(2.0 * EIGEN_PI / n);
-    volume += (heights[k + 1] - heights[k]) / 3.0 * (a1 + a2 + std::sqrt(a1 * a2));
-  }
-  return volume;
 }
 
 SurfaceMesh closedWith(const SurfaceMesh& open, const HoleFilling& fill) {
