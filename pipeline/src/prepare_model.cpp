@@ -98,20 +98,26 @@ SurfaceMesh closedRest(const SurfaceMesh& rest, const std::string& restName,
 }
 
 // requireValidRest of the closed rest, whose faces from `userFaceCount` on
-// fill its holes: a fill triangle that intersects the surface is named as such.
+// fill its holes: a fill triangle that intersects the surface is named as
+// such, before the problems it may cause (e.g. a wrong nesting).
 void requireValidClosedRest(const SurfaceMesh& closed, Eigen::Index userFaceCount,
                             const std::string& restName,
                             const SurfaceValidationOptions& validation) {
   const SurfaceValidation checked = validateSurface(closed, restName, validation);
   if (checked.ok()) return;
-  const SurfaceProblem& first = checked.problems.front();
-  const long long other = static_cast<long long>(first.value);
-  if (first.kind == SurfaceProblemKind::kSelfIntersection &&
-      std::max(first.element, other) >= userFaceCount) {
-    throw InputError(restName + ": a triangle filling one of its holes intersects face " +
-                     std::to_string(std::min(first.element, other)) +
-                     ": the holes cannot be closed without new vertices; close them yourself, "
-                     "or use the per-face tetrisation");
+  for (const SurfaceProblem& problem : checked.problems) {
+    const long long other = static_cast<long long>(problem.value);
+    if (problem.kind == SurfaceProblemKind::kSelfIntersection &&
+        std::max(problem.element, other) >= userFaceCount) {
+      const long long face = std::min(problem.element, other);
+      throw InputError(
+          restName + ": " +
+          (face < userFaceCount
+               ? "a triangle filling one of its holes intersects face " + std::to_string(face)
+               : std::string("two triangles filling its holes intersect")) +
+          ": the holes cannot be closed without new vertices; close them yourself, "
+          "or use the per-face tetrisation");
+    }
   }
   requireValidRest(closed, restName, validation);
 }

@@ -1,8 +1,9 @@
 // End to end: an open rest surface (a tube open at both ends) is prepared by
 // closing its holes with triangles between its boundary vertices; blends keep
 // the user's faces and reproduce the rest and every example at the surface.
-// --no-fill-holes refuses it as before; touching holes are one clear error;
-// an example whose fill folds through the tube loses tets to the exclusion.
+// --no-fill-holes refuses it as before; touching holes, and a fill through the
+// surface, are one clear error each; an example whose fill folds through the
+// tube loses tets to the exclusion.
 
 #include <Eigen/Geometry>
 
@@ -106,6 +107,23 @@ TEST_F(OpenRest, TouchingHolesAreOneClearError) {
                        " lies on 4 boundary edges"),
             std::string::npos)
       << r.err;
+}
+
+TEST_F(OpenRest, FillThroughTheSurfaceIsOneClearError) {
+  // A small closed cube inside the tube, straddling the plane of its top
+  // ring: the flat fill of the top hole must cut it.
+  const SurfaceMesh cube = testing_surfaces::cube(Eigen::Vector3d(-0.1, -0.1, 3.9), 0.2);
+  const SurfaceMesh rest = testing_surfaces::join(tube_.mesh, cube);
+  writeSurface(path("plugged.obj"), rest);
+  writeSurface(path("plugged_twist.obj"), SurfaceMesh{1.1 * rest.vertices, rest.triangles});
+  const RunResult r = tetblend({"prepare", path("plugged.obj"), path("plugged_twist.obj"), "-o",
+                                (dir_ / "plugged.tbm").string()},
+                               dir_);
+  expectOneLineError(r);
+  EXPECT_NE(r.err.find("plugged.obj: a triangle filling one of its holes intersects face "),
+            std::string::npos)
+      << r.err;
+  EXPECT_NE(r.err.find("close them yourself"), std::string::npos) << r.err;
 }
 
 TEST_F(OpenRest, ExampleWhoseFillFoldsLosesTetsToTheExclusion) {
