@@ -108,6 +108,7 @@ HoleFilling fillHoles(const SurfaceMesh& surface, const std::string& sourceName)
   SurfaceValidationOptions openSurface;
   openSurface.requireClosed = false;
   openSurface.checkSelfIntersections = false;
+  // An index out of range is validateSurface's first problem: this throws.
   if (!indicesInRange(surface)) requireValidRest(surface, sourceName, openSurface);
   const std::vector<int> boundaryEdges = boundaryEdgesPerVertex(surface);
   HoleFilling result;
