@@ -17,9 +17,15 @@ void addPrepareOptions(CLI::App& command, PrepareSettings& settings) {
                   "bound grades the interior from the surface inwards, and the examples refine "
                   "it where they need it)")
       ->check(CLI::NonNegativeNumber);
-  command.add_flag("--tetrise", settings.tetrise,
-                   "one tet per surface triangle (apex along the normal) instead of TetGen: for "
-                   "open or non-watertight surfaces (default: off)");
+  command.add_flag(
+      "--tetrise", settings.tetrise,
+      "one tet per surface triangle (apex along the normal) instead of TetGen: for "
+      "open surfaces, without filling their holes and with no interior tets (default: off)");
+  command.add_flag_callback(
+      "--no-fill-holes", [&settings] { settings.fillHoles = false; },
+      "refuse an open rest surface (default: its holes are closed by triangles between its "
+      "boundary vertices, no new vertices, before TetGen runs; the blended surfaces keep the "
+      "input's faces)");
   command.add_flag("--strict", settings.strict,
                    "refuse an example whose surface folds or intersects itself so that some tets "
                    "cannot be embedded (default: off; such tets are reported and left out of the "

@@ -17,7 +17,8 @@ struct PrepareSettings : PrepareOptions {
   bool quiet = false;  ///< no progress bar
 };
 
-/// Adds --quality, --max-volume, --tetrise, --strict and --threads to `command`.
+/// Adds --quality, --max-volume, --tetrise, --no-fill-holes, --strict and --threads to
+/// `command`.
 void addPrepareOptions(CLI::App& command, PrepareSettings& settings);
 
 /// prepareModel with a "prepare" progress bar on stderr (unless

@@ -133,7 +133,8 @@ void checkEdges(const SurfaceMesh& mesh, const SurfaceValidationOptions& options
               edge + " of face " + std::to_string(f) + " is a boundary edge (" +
                   std::to_string(boundaryCount) +
                   " in total): the surface is open, but a volume mesh needs a closed "
-                  "surface; close the holes or use the per-face tetrisation");
+                  "surface; let prepare fill the holes (its default, no new vertices), close "
+                  "them yourself, or use the per-face tetrisation");
     } else if (end - begin > 2) {
       out.add(SurfaceProblemKind::kNonManifoldEdge, f, static_cast<double>(end - begin),
               edge + " is shared by " + std::to_string(end - begin) + " faces (first face " +

@@ -7,6 +7,7 @@
 #include "tetblend/core/error.h"
 #include "tetblend/core/tet_geometry.h"
 #include "tetblend/meshing/example_aware_tets.h"
+#include "tetblend/meshing/hole_filling.h"
 #include "tetblend/meshing/self_intersection.h"
 #include "tetblend/meshing/surface_io.h"
 #include "tetblend/meshing/surface_validation.h"
@@ -84,6 +85,43 @@ void refuseSelfIntersecting(const Triangles& triangles, const std::vector<Surfac
   }
 }
 
+// The rest surface as it is meshed: the user's faces, then the triangles that
+// close its holes (none for the tetrisation, or with options.fillHoles off).
+// `filling` says what was added.
+SurfaceMesh closedRest(const SurfaceMesh& rest, const std::string& restName,
+                       const PrepareOptions& options, HoleFilling& filling) {
+  if (options.tetrise || !options.fillHoles) return rest;
+  filling = fillHoles(rest, restName);
+  SurfaceMesh closed{rest.vertices, Triangles(rest.triangles.rows() + filling.triangles.rows(), 3)};
+  closed.triangles << rest.triangles, filling.triangles;
+  return closed;
+}
+
+// requireValidRest of the closed rest, whose faces from `userFaceCount` on
+// fill its holes: a fill triangle that intersects the surface is named as
+// such, before the problems it may cause (e.g. a wrong nesting).
+void requireValidClosedRest(const SurfaceMesh& closed, Eigen::Index userFaceCount,
+                            const std::string& restName,
+                            const SurfaceValidationOptions& validation) {
+  const SurfaceValidation checked = validateSurface(closed, restName, validation);
+  if (checked.ok()) return;
+  for (const SurfaceProblem& problem : checked.problems) {
+    const long long other = static_cast<long long>(problem.value);
+    if (problem.kind == SurfaceProblemKind::kSelfIntersection &&
+        std::max(problem.element, other) >= userFaceCount) {
+      const long long face = std::min(problem.element, other);
+      throw InputError(
+          restName + ": " +
+          (face < userFaceCount
+               ? "a triangle filling one of its holes intersects face " + std::to_string(face)
+               : std::string("two triangles filling its holes intersect")) +
+          ": the holes cannot be closed without new vertices; close them yourself, "
+          "or use the per-face tetrisation");
+    }
+  }
+  requireValidRest(closed, restName, validation);
+}
+
 }  // namespace
 
 std::size_t prepareStepCount(std::size_t exampleCount) { return exampleCount + 2; }
@@ -107,7 +145,9 @@ ModelData prepareModel(const SurfaceMesh& rest, const std::vector<SurfaceMesh>& 
   }
   SurfaceValidationOptions validation;
   validation.requireClosed = !options.tetrise;
-  requireValidRest(rest, restName, validation);
+  HoleFilling filling;
+  const SurfaceMesh closed = closedRest(rest, restName, options, filling);
+  requireValidClosedRest(closed, rest.triangles.rows(), restName, validation);
   for (std::size_t k = 0; k < examples.size(); ++k) {
     requireCompatibleExample(rest, examples[k], exampleNames[k]);
     if (examples[k].vertices == rest.vertices) {
@@ -115,7 +155,7 @@ ModelData prepareModel(const SurfaceMesh& rest, const std::vector<SurfaceMesh>& 
                                 "): blending this example changes nothing");
     }
   }
-  if (options.strict) refuseSelfIntersecting(rest.triangles, examples, exampleNames);
+  if (options.strict) refuseSelfIntersecting(closed.triangles, examples, exampleNames);
   advance(messages, 1);
 
   ModelData model;
@@ -134,7 +174,7 @@ ModelData prepareModel(const SurfaceMesh& rest, const std::vector<SurfaceMesh>& 
   tetgen.maxRadiusEdgeRatio = options.radiusEdgeRatio;
   tetgen.maxTetVolume = options.maxVolume.value_or(0.0);
   tetgen.sourceName = restName;
-  const TetMesh tets = tetrahedralize(rest, tetgen);
+  const TetMesh tets = tetrahedralize(closed, tetgen);
   advance(messages, 1);
   if (tets.tets.rows() > kLargeMeshWarningTets) {
     say(messages.warning, restName + ": " + roughCount(tets.tets.rows()) +
@@ -169,12 +209,19 @@ ModelData prepareModel(const SurfaceMesh& rest, const std::vector<SurfaceMesh>& 
   std::sort(model.excludedTets.begin(), model.excludedTets.end());
   model.excludedTets.erase(std::unique(model.excludedTets.begin(), model.excludedTets.end()),
                            model.excludedTets.end());
+  const std::string filled =
+      filling.holeCount == 0
+          ? ""
+          : "; filled " + std::to_string(filling.holeCount) + " hole" +
+                (filling.holeCount > 1 ? "s" : "") + " with " +
+                std::to_string(filling.triangles.rows()) +
+                " triangles, no new vertices (the blended surfaces keep the input's faces)";
   say(messages.note, restName + ": " + roughCount(model.rest.tets.rows()) + " tets, " +
                          std::to_string(model.rest.vertices.rows()) + " vertices (" +
                          std::to_string(built.steinerPoints) +
                          " Steiner points added for the examples in " +
                          std::to_string(built.rounds) + " rounds; " +
-                         std::to_string(model.excludedTets.size()) + " tets excluded)");
+                         std::to_string(model.excludedTets.size()) + " tets excluded)" + filled);
   return model;
 }
 

@@ -21,7 +21,8 @@ namespace {
 
 std::shared_ptr<Model> prepare(py::handle restVertices, py::handle triangles,
                                py::iterable exampleVertices, double quality,
-                               std::optional<double> maxVolume, bool tetrise, bool strict) {
+                               std::optional<double> maxVolume, bool tetrise, bool fillHoles,
+                               bool strict) {
   SurfaceMesh rest;
   rest.vertices = toVertices(restVertices, "rest_vertices");
   rest.triangles = toIndices<3>(triangles, "triangles", rest.vertices.rows());
@@ -35,6 +36,7 @@ std::shared_ptr<Model> prepare(py::handle restVertices, py::handle triangles,
   options.radiusEdgeRatio = quality;
   options.maxVolume = maxVolume;
   options.tetrise = tetrise;
+  options.fillHoles = fillHoles;
   options.strict = strict;
   std::vector<std::string> warnings;
   PrepareMessages messages;
@@ -165,14 +167,18 @@ void bindModel(py::module_& m) {
 
   m.def("prepare", &prepare, py::arg("rest_vertices"), py::arg("triangles"),
         py::arg("example_vertices"), py::kw_only(), py::arg("quality") = 2.0,
-        py::arg("max_volume") = py::none(), py::arg("tetrise") = false, py::arg("strict") = false,
+        py::arg("max_volume") = py::none(), py::arg("tetrise") = false,
+        py::arg("fill_holes") = true, py::arg("strict") = false,
         "Prepares a model from surfaces in memory, as 'tetblend prepare' does from files.\n\n"
         "rest_vertices: (n, 3) real; triangles: (f, 3) integer, shared by every example;\n"
         "example_vertices: a sequence of (n, 3) real arrays, one per example, same units.\n"
         "quality: TetGen's radius-edge bound (> 1, or 0 for none; default 2). max_volume:\n"
         "TetGen's volume bound in units cubed (default None: none). tetrise: one tet per\n"
-        "triangle instead of TetGen (open surfaces). strict: refuse examples whose tets\n"
-        "cannot all be embedded (default: exclude those tets, with a UserWarning).\n"
+        "triangle instead of TetGen (no interior). fill_holes: close the holes of an open\n"
+        "rest with triangles between its boundary vertices before TetGen runs (default True;\n"
+        "Model.surface_triangles stays the input's); False refuses an open rest. strict:\n"
+        "refuse examples whose tets cannot all be embedded (default: exclude those tets,\n"
+        "with a UserWarning).\n"
         "Raises InputError naming the array and the element at fault.");
   m.def(
       "load",

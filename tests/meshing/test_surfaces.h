@@ -1,6 +1,6 @@
 #pragma once
-// Small closed surfaces with known volumes for the meshing tests, built by
-// hand (not by the code under test).
+// Small surfaces with known volumes for the meshing tests (closed, or open
+// with planar holes), built by hand (not by the code under test).
 
 #include <Eigen/Geometry>
 
@@ -20,6 +20,57 @@
 
 namespace tetblend {
 namespace testing_surfaces {
+
+/// A stack of regular n-gons (ring k: radius radii[k] at height heights[k],
+/// vertex angles 2πi/n in every ring) joined by bands of quads, each split
+/// into two triangles, outward; no caps, so the top and bottom rings are
+/// holes. The quads are planar trapezoids (chords at equal angles are
+/// parallel), so a band with its planar rings closed is a frustum of an
+/// n-gon pyramid: the enclosed volume has a closed form (frustaVolume).
+/// `saddle` > 0 lifts each vertex by saddle·sin 2θ: non-planar rings, for
+/// which the closed form does not hold.
+struct RingStack {
+  SurfaceMesh mesh;
+  int n;
+  int vertex(int ring, int i) const { return ring * n + (i % n); }
+};
+
+inline RingStack ringStack(int n, const std::vector<double>& radii,
+                           const std::vector<double>& heights, double saddle = 0.0) {
+  RingStack stack{{}, n};
+  const int rings = static_cast<int>(radii.size());
+  stack.mesh.vertices.resize(rings * n, 3);
+  for (int k = 0; k < rings; ++k) {
+    for (int i = 0; i < n; ++i) {
+      const double angle = 2.0 * EIGEN_PI * i / n;
+      stack.mesh.vertices.row(k * n + i) << radii[k] * std::cos(angle), radii[k] * std::sin(angle),
+          heights[k] + saddle * std::sin(2.0 * angle);
+    }
+  }
+  stack.mesh.triangles.resize(2 * (rings - 1) * n, 3);
+  int f = 0;
+  for (int k = 0; k + 1 < rings; ++k) {
+    for (int i = 0; i < n; ++i) {
+      const int a = stack.vertex(k, i), b = stack.vertex(k, i + 1);
+      const int c = stack.vertex(k + 1, i + 1), d = stack.vertex(k + 1, i);
+      stack.mesh.triangles.row(f++) << a, b, c;
+      stack.mesh.triangles.row(f++) << a, c, d;
+    }
+  }
+  return stack;
+}
+
+/// Enclosed volume of the stack of frusta (regular n-gon areas n/2 r² sin 2π/n).
+inline double frustaVolume(int n, const std::vector<double>& radii,
+                           const std::vector<double>& heights) {
+  double volume = 0.0;
+  for (std::size_t k = 0; k + 1 < radii.size(); ++k) {
+    const double a1 = 0.5 * n * radii[k] * radii[k] * std::sin(2.0 * EIGEN_PI / n);
+    const double a2 = 0.5 * n * radii[k + 1] * radii[k + 1] * std::sin(2.0 * EIGEN_PI / n);
+    volume += (heights[k + 1] - heights[k]) / 3.0 * (a1 + a2 + std::sqrt(a1 * a2));
+  }
+  return volume;
+}
 
 /// Axis-aligned cube [lo, lo + size]^3, 8 vertices, 12 triangles, outward and
 /// counter-clockwise (each face normal checked by hand: -z, +z, -y, +y, -x, +x).

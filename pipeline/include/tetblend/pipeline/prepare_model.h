@@ -24,6 +24,10 @@ struct PrepareOptions {
   /// (example_aware_tets.h).
   std::optional<double> maxVolume;
   bool tetrise = false;  ///< per-face tetrisation instead of TetGen
+  /// Close the holes of an open rest (hole_filling.h) and tetrahedralise the
+  /// closed surface; false refuses an open rest. The fill's triangles bound
+  /// the tets but are not in the model's surfaceTriangles.
+  bool fillHoles = true;
   /// Refuse examples with tets that cannot be embedded (default: report them
   /// and leave them out of the stitch).
   bool strict = false;
@@ -56,8 +60,9 @@ constexpr long long kLargeMeshWarningTets = 1000000;
 /// placement (its surface folds or intersects itself) become the model's excluded tets, with one
 /// warning per such example; options.strict refuses them instead. An example equal to the rest is
 /// warned about, and so is a rest mesh above kLargeMeshWarningTets before the long steps start; a
-/// note gives the tet count and the Steiner points added. Throws InputError naming the file and the
-/// problem.
+/// note gives the holes filled, the tet count and the Steiner points added. Throws InputError
+/// naming the file and the problem (also when the triangles filling a hole intersect the rest's
+/// surface).
 ModelData prepareModel(const std::string& restPath, const std::vector<std::string>& examplePaths,
                        const PrepareOptions& options, const PrepareMessages& messages = {});
 

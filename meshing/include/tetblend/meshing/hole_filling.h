@@ -1,0 +1,37 @@
+#pragma once
+// Closing the holes of an open surface without adding vertices, so that an
+// open rest (a scan, a game character) can be tetrahedralised: every example
+// shares the rest's vertices, so the same fill triangles close every example,
+// and the surface vertices stay bit for bit and in order. Each hole is
+// triangulated by CGAL's minimum-weight hole triangulation (Liepa 2003,
+// CGAL::Polygon_mesh_processing::triangulate_hole), searched among the faces
+// of the 3D Delaunay triangulation of the hole's boundary first.
+
+#include <string>
+
+#include "tetblend/core/mesh_types.h"
+
+namespace tetblend {
+
+/// The triangles that close a surface's holes.
+struct HoleFilling {
+  /// #T by 3 vertex indices into the surface's vertices; oriented like the
+  /// surface, so the surface's faces followed by these form a closed,
+  /// consistently oriented surface. Empty when the surface is closed.
+  Triangles triangles;
+  int holeCount = 0;  ///< boundary loops closed
+};
+
+/// Finds the boundary loops of `surface` (#V by 3 positions, #F by 3
+/// indices, read from `sourceName`, used in messages only) and triangulates
+/// each without adding vertices; no fill edge duplicates an edge of the
+/// surface. A closed surface gets no triangles (and is not checked further).
+/// Otherwise the surface must be an oriented manifold with boundary: throws
+/// InputError naming the vertex if a vertex lies on two boundary loops (or on
+/// one loop twice), the first problem of validateSurface (without the closed
+/// and self-intersection checks) if there is one, and naming the hole if CGAL
+/// finds no triangulation of it. Whether the fill intersects the surface is
+/// not checked here (validate the closed surface).
+HoleFilling fillHoles(const SurfaceMesh& surface, const std::string& sourceName);
+
+}  // namespace tetblend

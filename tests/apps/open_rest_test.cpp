@@ -1,0 +1,154 @@
+// End to end: an open rest surface (a tube open at both ends) is prepared by
+// closing its holes with triangles between its boundary vertices; blends keep
+// the user's faces and reproduce the rest and every example at the surface.
+// --no-fill-holes refuses it as before; touching holes, and a fill through the
+// surface, are one clear error each; an example whose fill folds through the
+// tube loses tets to the exclusion.
+
+#include <Eigen/Geometry>
+
+#include "apps_test_support.h"
+#include "test_surfaces.h"
+#include "tetblend/core/tet_geometry.h"
+#include "tetblend/meshing/procedural_shapes.h"
+
+namespace tetblend::apps_test {
+namespace {
+
+// The promise: unit weights reproduce each example at the surface to
+// 1e-9 of the bounding-box diagonal (the stitch is a least-squares solve of
+// a compatible field; round-off is ~1e-13 of the size on this small mesh).
+constexpr double kInterpolationRelTol = 1e-9;
+constexpr int kSegments = 16;  // vertices per ring: two holes of 16 edges
+
+class OpenRest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = scratchDir();
+    std::vector<double> radii, heights;
+    for (int k = 0; k <= 8; ++k) {
+      radii.push_back(0.5);
+      heights.push_back(0.5 * k);
+    }
+    tube_ = testing_surfaces::ringStack(kSegments, radii, heights);
+    const SurfaceMesh& rest = tube_.mesh;
+    const Eigen::Vector3d origin = Eigen::Vector3d::Zero(), axis = Eigen::Vector3d::UnitZ();
+    writeSurface(path("rest.obj"), rest);
+    writeSurface(
+        path("twist.obj"),
+        SurfaceMesh{twistAboutAxis(rest.vertices, origin, axis, EIGEN_PI, 4.0), rest.triangles});
+    writeSurface(path("bend.obj"),
+                 SurfaceMesh{bendAboutAxis(rest.vertices, origin, axis, Eigen::Vector3d::UnitX(),
+                                           0.5 * EIGEN_PI, 4.0),
+                             rest.triangles});
+  }
+  std::string path(const std::string& name) const { return (dir_ / name).string(); }
+
+  fs::path dir_;
+  testing_surfaces::RingStack tube_;
+};
+
+TEST_F(OpenRest, HolesAreFilledAndBlendsKeepTheUsersFaces) {
+  const fs::path model = dir_ / "tube.tbm";
+  const RunResult r = tetblend(
+      {"prepare", path("rest.obj"), path("twist.obj"), path("bend.obj"), "-o", model.string()},
+      dir_);
+  ASSERT_EQ(r.code, 0) << r.err;
+  // Two 16-gons take 2 × 14 triangles.
+  EXPECT_NE(r.err.find("filled 2 holes with 28 triangles, no new vertices"), std::string::npos)
+      << r.err;
+  EXPECT_EQ(r.err.find("warning"), std::string::npos) << r.err;
+
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"0,0", "rest.obj"}, {"1,0", "twist.obj"}, {"0,1", "bend.obj"}};
+  for (const std::string method : {"kaji", "linear"}) {
+    for (const auto& [weights, expected] : cases) {
+      SCOPED_TRACE(method + " at " + weights);
+      const fs::path out = dir_ / (method + weights.substr(0, 1) + weights.substr(2) + ".vtu");
+      const RunResult blend = tetblend(
+          {"blend", model.string(), "-w", weights, "--method", method, "-o", out.string()}, dir_);
+      ASSERT_EQ(blend.code, 0) << blend.err;
+      const auto vtp = readVtp(fs::path(out).replace_extension(".vtp"));
+      EXPECT_EQ(vtp->GetNumberOfPolys(), tube_.mesh.triangles.rows());
+      const SurfaceMesh target = readSurface(path(expected));
+      EXPECT_LT(maxDistance(pointsOf(vtp), target.vertices),
+                kInterpolationRelTol * boundingBoxDiagonal(target.vertices));
+    }
+  }
+}
+
+TEST_F(OpenRest, NoFillHolesRefusesAsBefore) {
+  const RunResult r = tetblend({"prepare", path("rest.obj"), path("twist.obj"), "--no-fill-holes",
+                                "-o", (dir_ / "refused.tbm").string()},
+                               dir_);
+  expectOneLineError(r);
+  EXPECT_NE(r.err.find("is a boundary edge (32 in total)"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("let prepare fill the holes"), std::string::npos) << r.err;
+}
+
+TEST_F(OpenRest, TouchingHolesAreOneClearError) {
+  // Drop the two triangles of quad 3 of band 0 and of quad 4 of band 1: the
+  // bottom hole and the new one then share vertex (ring 1, 4).
+  SurfaceMesh touching{tube_.mesh.vertices, Triangles(tube_.mesh.triangles.rows() - 4, 3)};
+  int kept = 0;
+  for (int f = 0; f < tube_.mesh.triangles.rows(); ++f) {
+    const int quad = f / 2;
+    if (quad == 3 || quad == kSegments + 4) continue;
+    touching.triangles.row(kept++) = tube_.mesh.triangles.row(f);
+  }
+  writeSurface(path("touching.obj"), touching);
+  writeSurface(path("touching_twist.obj"),
+               SurfaceMesh{readSurface(path("twist.obj")).vertices, touching.triangles});
+  const RunResult r = tetblend({"prepare", path("touching.obj"), path("touching_twist.obj"), "-o",
+                                (dir_ / "touching.tbm").string()},
+                               dir_);
+  expectOneLineError(r);
+  EXPECT_NE(r.err.find("touching.obj: vertex " + std::to_string(tube_.vertex(1, 4)) +
+                       " lies on 4 boundary edges"),
+            std::string::npos)
+      << r.err;
+}
+
+TEST_F(OpenRest, FillThroughTheSurfaceIsOneClearError) {
+  // A small closed cube inside the tube, straddling the plane of its top
+  // ring: the flat fill of the top hole must cut it.
+  const SurfaceMesh cube = testing_surfaces::cube(Eigen::Vector3d(-0.1, -0.1, 3.9), 0.2);
+  const SurfaceMesh rest = testing_surfaces::join(tube_.mesh, cube);
+  writeSurface(path("plugged.obj"), rest);
+  writeSurface(path("plugged_twist.obj"), SurfaceMesh{1.1 * rest.vertices, rest.triangles});
+  const RunResult r = tetblend({"prepare", path("plugged.obj"), path("plugged_twist.obj"), "-o",
+                                (dir_ / "plugged.tbm").string()},
+                               dir_);
+  expectOneLineError(r);
+  EXPECT_NE(r.err.find("plugged.obj: a triangle filling one of its holes intersects face "),
+            std::string::npos)
+      << r.err;
+  EXPECT_NE(r.err.find("close them yourself"), std::string::npos) << r.err;
+}
+
+TEST_F(OpenRest, ExampleWhoseFillFoldsLosesTetsToTheExclusion) {
+  // Vertex 0 of the top ring pushed across the tube's axis: the triangles
+  // that close the top hole fold over each other in this example only.
+  SurfaceMesh folded = readSurface(path("twist.obj"));
+  const int v = tube_.vertex(8, 0);
+  folded.vertices.row(v) << -0.8 * folded.vertices(v, 0), -0.8 * folded.vertices(v, 1),
+      folded.vertices(v, 2);
+  writeSurface(path("folded.obj"), folded);
+  const fs::path model = dir_ / "folded.tbm";
+  const RunResult r = tetblend(
+      {"prepare", path("rest.obj"), path("folded.obj"), path("bend.obj"), "-o", model.string()},
+      dir_);
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.err.find("tetblend: warning: " + path("folded.obj") + ": "), std::string::npos)
+      << r.err;
+  EXPECT_NE(r.err.find("tets cannot be embedded"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("bend.obj: "), std::string::npos) << r.err;
+  const fs::path out = dir_ / "folded_unit.vtu";
+  ASSERT_EQ(tetblend({"blend", model.string(), "-w", "1,0", "-o", out.string()}, dir_).code, 0);
+  EXPECT_LT(
+      maxDistance(pointsOf(readVtp(fs::path(out).replace_extension(".vtp"))), folded.vertices),
+      kInterpolationRelTol * boundingBoxDiagonal(folded.vertices));
+}
+
+}  // namespace
+}  // namespace tetblend::apps_test
