@@ -7,7 +7,7 @@ set -euo pipefail
 packages=(
   build-essential cmake ninja-build pkg-config
   libeigen3-dev libcgal-dev libtet1.5-dev libsuitesparse-dev libceres-dev
-  libvtk9-dev libcli11-dev nlohmann-json3-dev libtbb-dev
+  libvtk9-dev libcli11-dev nlohmann-json3-dev libtbb-dev zlib1g-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   # The Python module and its tests, for Debian's /usr/bin/python3.
   pybind11-dev python3-dev python3-numpy python3-pytest

@@ -2,8 +2,11 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <optional>
 #include <string_view>
 #include <vector>
+
+#include <zlib.h>
 
 #include "tetblend/core/error.h"
 #include "text_parsing.h"
@@ -122,6 +125,103 @@ void checkBlockHeader(const std::string& path, std::string_view header, std::uin
   }
 }
 
+
+// Bytes of an integer of VTK type `type` (Int8 ... UInt64), 0 for others.
+std::size_t integerSize(std::string_view type) {
+  if (type == "Int8" || type == "UInt8") return 1;
+  if (type == "Int16" || type == "UInt16") return 2;
+  if (type == "Int32" || type == "UInt32") return 4;
+  if (type == "Int64" || type == "UInt64") return 8;
+  return 0;
+}
+
+// The unsigned value of the `size`-byte integer at `bytes[at]`.
+std::uint64_t integerAt(std::string_view bytes, std::size_t at, std::size_t size,
+                        bool bigEndian) {
+  std::uint64_t value = 0;
+  for (std::size_t i = 0; i < size; ++i) {
+    value = (value << 8) | static_cast<unsigned char>(bytes[at + (bigEndian ? i : size - 1 - i)]);
+  }
+  return value;
+}
+
+// Where an array's bytes are: raw (appended raw data) or base64.
+struct ArrayBytes {
+  std::string_view text;  // from the array's first header byte to the end of the file
+  bool raw = false;
+};
+
+// The first `count` decoded bytes of an array (header included).
+std::string decodedPrefix(const ArrayBytes& array, std::size_t count) {
+  return array.raw ? std::string(array.text.substr(0, count)) : base64Prefix(array.text, count);
+}
+
+// The largest of the `size`-byte values in `bytes[from, to)` (unsigned: a
+// negative value counts as huge), into `largest`.
+void takeLargest(std::string_view bytes, std::size_t from, std::size_t to, std::size_t size,
+                 bool bigEndian, std::uint64_t& largest) {
+  for (std::size_t at = from; at + size <= to; at += size) {
+    largest = std::max(largest, integerAt(bytes, at, size, bigEndian));
+  }
+}
+
+// The largest `size`-byte value an array holds, where it can be read
+// cheaply: uncompressed (VTK encodes its header and data as one base64 run),
+// or zlib-compressed raw appended data; nothing otherwise (VTK judges). VTK
+// reads as many values as the piece needs, wherever the header says the
+// array ends, so every value the header covers counts.
+std::optional<std::uint64_t> largestValue(const ArrayBytes& array, std::size_t size,
+                                          bool compressed, bool zlib, const Layout& layout) {
+  const std::size_t room = array.text.size();
+  std::uint64_t largest = 0;
+  if (!compressed) {
+    const std::string header = decodedPrefix(array, layout.word);
+    if (header.size() < layout.word) return std::nullopt;
+    const std::uint64_t count = std::min<std::uint64_t>(word(header, 0, layout), room);
+    const std::string bytes = decodedPrefix(array, layout.word + count);
+    takeLargest(bytes, layout.word, bytes.size(), size, layout.bigEndian, largest);
+    return largest;
+  }
+  if (!zlib || !array.raw || room < 3 * layout.word) return std::nullopt;
+  const std::uint64_t blocks = word(array.text, 0, layout);
+  const std::uint64_t blockSize = word(array.text, 1, layout);
+  const std::uint64_t lastSize = word(array.text, 2, layout);
+  if (blocks == 0 || blocks > room / layout.word - 3 || blockSize % size != 0) return std::nullopt;
+  std::size_t at = (3 + blocks) * layout.word;  // the first block's compressed bytes
+  for (std::size_t b = 0; b < blocks; ++b) {
+    const std::uint64_t compressedSize = word(array.text, 3 + b, layout);
+    uLongf inflated = b + 1 == blocks && lastSize != 0 ? lastSize : blockSize;
+    if (compressedSize > room - at || inflated / layout.ratio > compressedSize) return std::nullopt;
+    std::string out(inflated, '\0');
+    if (uncompress(reinterpret_cast<Bytef*>(out.data()), &inflated,
+                   reinterpret_cast<const Bytef*>(array.text.data() + at),
+                   compressedSize) != Z_OK) {
+      return std::nullopt;
+    }
+    takeLargest(out, 0, inflated, size, layout.bigEndian, largest);
+    at += compressedSize;
+  }
+  return largest;
+}
+
+// The largest value of an ascii integer array whose values start at
+// `values` (a negative one counts as 0: VTK refuses it itself).
+std::uint64_t largestAsciiValue(std::string_view text, std::size_t values) {
+  const std::size_t end = text.find('<', values);
+  const std::string_view body =
+      text.substr(values, end == std::string_view::npos ? end : end - values);
+  std::uint64_t largest = 0;
+  std::size_t at = 0;
+  while ((at = body.find_first_not_of(" \t\r\n", at)) != std::string_view::npos) {
+    const std::size_t next = body.find_first_of(" \t\r\n", at);
+    largest = std::max(largest, decimal(body.substr(at, next == std::string_view::npos
+                                                            ? next
+                                                            : next - at)));
+    at = next;
+  }
+  return largest;
+}
+
 }  // namespace
 
 void checkVtkXmlBounds(const std::string& path, const std::string& bytes) {
@@ -161,7 +261,6 @@ void checkVtkXmlBounds(const std::string& path, const std::string& bytes) {
                         std::to_string(bytes.size()) + " bytes can hold");
     }
   }
-  if (compressor.empty()) return;
   // Appended data starts after the '_' that follows the AppendedData tag.
   // VTK skips the first character after the tag and its white space without
   // looking at it, so anything but '_' there shifts every header it reads.
@@ -178,10 +277,16 @@ void checkVtkXmlBounds(const std::string& path, const std::string& bytes) {
   const std::size_t data = underscore == std::string_view::npos ? text.size() : underscore + 1;
   const bool rawAppended =
       appended != std::string_view::npos && attribute(text, appended, "encoding") == "raw";
+  const bool compressed = !compressor.empty();
   const std::size_t maxHeader = 3 * layout.word + 64 * layout.word;  // enough blocks to judge
   for (std::size_t tag = xml.find("<DataArray"); tag != std::string_view::npos;
        tag = xml.find("<DataArray", tag + 1)) {
     const std::string_view format = attribute(xml, tag, "format");
+    // VTK sizes a cell array's connectivity from its last offset, a value in
+    // the data: bound the offsets where they can be read cheaply.
+    const bool offsets = attribute(xml, tag, "Name") == "offsets";
+    const std::size_t valueSize = integerSize(attribute(xml, tag, "type"));
+    std::optional<std::uint64_t> lastOffset;
     std::size_t start = 0;
     // VTK reads an array with an offset from the appended data unless its
     // format says otherwise, also when the format attribute is missing.
@@ -197,13 +302,28 @@ void checkVtkXmlBounds(const std::string& path, const std::string& bytes) {
       if (start == std::string_view::npos) continue;
       ++start;
     } else {
-      continue;
+      const std::size_t values = xml.find('>', tag);
+      if (offsets && values != std::string_view::npos) {
+        lastOffset = largestAsciiValue(xml, values + 1);
+      }
+      start = std::string_view::npos;
     }
-    const std::uint64_t left = text.size() - start;
-    if (inAppended && rawAppended) {
-      checkBlockHeader(path, text.substr(start, maxHeader), left, layout);
-    } else {
-      checkBlockHeader(path, base64Prefix(text.substr(start), maxHeader), left / 4 * 3, layout);
+    if (start != std::string_view::npos) {
+      const ArrayBytes array{text.substr(start), inAppended && rawAppended};
+      const std::uint64_t left = text.size() - start;
+      if (compressed && array.raw) {
+        checkBlockHeader(path, text.substr(start, maxHeader), left, layout);
+      } else if (compressed) {
+        checkBlockHeader(path, base64Prefix(text.substr(start), maxHeader), left / 4 * 3, layout);
+      }
+      if (offsets && valueSize > 0) {
+        lastOffset = largestValue(array, valueSize, compressed,
+                                  compressor == "vtkZLibDataCompressor", layout);
+      }
+    }
+    if (lastOffset && *lastOffset > limit) {
+      damaged(path, "a cell offset " + std::to_string(*lastOffset) + " is more than its " +
+                        std::to_string(bytes.size()) + " bytes can hold");
     }
   }
 }
