@@ -241,6 +241,11 @@ TetMesh readVtu(const std::string& path) {
                        "supported; tetrahedralise the mesh first");
     }
     grid->GetCellPoints(t, ids);
+    if (ids->GetNumberOfIds() != 4) {
+      throw InputError(path + ": cell " + std::to_string(t) + " (0-based) is a tetrahedron with " +
+                       std::to_string(ids->GetNumberOfIds()) +
+                       " vertices (its offsets are damaged): fix the file");
+    }
     for (int c = 0; c < 4; ++c) {
       const vtkIdType index = ids->GetId(c);
       if (index < 0 || index >= mesh.vertices.rows()) {

@@ -189,6 +189,26 @@ TEST(VtkXmlBounds, CellOffsetsBeyondTheFileAreRefusedBeforeVtkAllocates) {
   }
 }
 
+// Found by fuzz_vtu: a VTK_TETRA cell whose offsets give it fewer than four
+// points; the reader read ids past the end of VTK's list (a null pointer).
+TEST(VtkXmlBounds, TetrahedronWithTooFewPointsIsAnInputError) {
+  const std::string vtu =
+      "<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\">"
+      "<UnstructuredGrid><Piece NumberOfPoints=\"4\" NumberOfCells=\"2\">"
+      "<Points><DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">"
+      "0 0 0 1 0 0 0 1 0 0 0 1</DataArray></Points><Cells>"
+      "<DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">0 1 2 3</DataArray>"
+      "<DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">4 4</DataArray>"
+      "<DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">10 10</DataArray>"
+      "</Cells></Piece></UnstructuredGrid></VTKFile>\n";
+  TempDir dir;
+  io_test::writeText(dir.file("a.vtu"), vtu);
+  const std::string message = messageOf(dir.file("a.vtu"));
+  EXPECT_NE(message.find("a.vtu: cell 1 (0-based) is a tetrahedron with 0 vertices"),
+            std::string::npos)
+      << message;
+}
+
 // The offsets check reads real files' offsets (VTK's writer: raw appended,
 // zlib-compressed; a model with many cells spans several blocks) and lets
 // them through.
