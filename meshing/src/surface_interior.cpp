@@ -26,6 +26,7 @@ struct SurfaceInterior::Impl {
   Triangles triangles;
   std::unique_ptr<Tree> tree;
   std::unique_ptr<CGAL::Side_of_triangle_mesh<Mesh, Kernel, CGAL::Default, Tree>> side;
+  bool usable = false;  // the surface built as a closed mesh
 
   // True when a face found by the query has none of `corners` as a vertex.
   template <typename Query>
@@ -88,13 +89,16 @@ SurfaceInterior::SurfaceInterior(const Vertices& vertices, const Triangles& tria
     m.points.emplace_back(vertices(i, 0), vertices(i, 1), vertices(i, 2));
     handles.push_back(m.mesh.add_vertex(m.points.back()));
   }
-  // A clean closed manifold surface: add_face succeeds for every face, and
-  // face f of the mesh is row f of `triangles`.
+  // On a clean closed manifold surface add_face succeeds for every face, and
+  // face f of the mesh is row f of `triangles`; otherwise nothing is claimed.
   for (Eigen::Index f = 0; f < triangles.rows(); ++f) {
-    m.mesh.add_face(handles[static_cast<std::size_t>(triangles(f, 0))],
-                    handles[static_cast<std::size_t>(triangles(f, 1))],
-                    handles[static_cast<std::size_t>(triangles(f, 2))]);
+    const Mesh::Face_index face =
+        m.mesh.add_face(handles[static_cast<std::size_t>(triangles(f, 0))],
+                        handles[static_cast<std::size_t>(triangles(f, 1))],
+                        handles[static_cast<std::size_t>(triangles(f, 2))]);
+    if (face == Mesh::null_face()) return;
   }
+  m.usable = true;
   m.tree = std::make_unique<Tree>(faces(m.mesh).first, faces(m.mesh).second, m.mesh);
   m.side = std::make_unique<CGAL::Side_of_triangle_mesh<Mesh, Kernel, CGAL::Default, Tree>>(*m.tree);
 }
@@ -103,6 +107,7 @@ SurfaceInterior::~SurfaceInterior() = default;
 
 bool SurfaceInterior::segmentInside(int a, int b) const {
   const Impl& m = *impl_;
+  if (!m.usable) return true;
   const Point& p = m.points[static_cast<std::size_t>(a)];
   const Point& q = m.points[static_cast<std::size_t>(b)];
   if (m.meetsOtherFace(Kernel::Segment_3(p, q), {a, b})) return false;
@@ -111,6 +116,7 @@ bool SurfaceInterior::segmentInside(int a, int b) const {
 
 bool SurfaceInterior::triangleInside(int a, int b, int c) const {
   const Impl& m = *impl_;
+  if (!m.usable) return true;
   const Point& p = m.points[static_cast<std::size_t>(a)];
   const Point& q = m.points[static_cast<std::size_t>(b)];
   const Point& r = m.points[static_cast<std::size_t>(c)];

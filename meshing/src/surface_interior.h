@@ -19,7 +19,8 @@ namespace tetblend {
 class SurfaceInterior {
  public:
   /// `vertices` (#V by 3) and `triangles` (#F by 3): a closed, consistently
-  /// oriented surface without self-intersections (not checked).
+  /// oriented surface without self-intersections (not checked; a surface
+  /// that cannot be built as a manifold mesh makes every answer true).
   SurfaceInterior(const Vertices& vertices, const Triangles& triangles);
   ~SurfaceInterior();
   SurfaceInterior(const SurfaceInterior&) = delete;

@@ -174,5 +174,17 @@ TEST(SurfaceInterior, SegmentAcrossTheGapIsOutsideAndAcrossAnArmInside) {
   EXPECT_FALSE(interior.segmentInside(inner, otherInner));
 }
 
+// A face list that is no manifold mesh (two faces running an edge the same
+// way) cannot be judged: every answer is "inside", so nothing is split.
+TEST(SurfaceInterior, NoClaimOnASurfaceThatIsNoManifoldMesh) {
+  Vertices vertices(4, 3);
+  vertices << 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1;
+  Triangles triangles(2, 3);
+  triangles << 0, 1, 2, 0, 1, 3;
+  const SurfaceInterior interior(vertices, triangles);
+  EXPECT_TRUE(interior.segmentInside(2, 3));
+  EXPECT_TRUE(interior.triangleInside(1, 2, 3));
+}
+
 }  // namespace
 }  // namespace tetblend
