@@ -74,6 +74,10 @@ std::string fingerprint(const BatchSpec& spec, const BatchJob& job, std::uint64_
                     ";weights=" + job.weights.dump() + ";consistency=" + spec.consistency +
                     ";nonlinear=" + (spec.nonlinear ? "1" : "0") + ";formats=";
   for (const std::string& f : spec.surfaceFormats) key += f + ",";
+  // Options at their defaults add nothing, so journals written before they
+  // existed stay valid.
+  if (spec.surfaceOnly) key += ";surface_only";
+  if (!spec.qualityArrays.all) key += ";quality_arrays=" + qualityArraysText(spec.qualityArrays);
   return hex64(fnv1a64(reinterpret_cast<const unsigned char*>(key.data()), key.size()));
 }
 

@@ -50,6 +50,28 @@ BatchSpec readBatchSpec(const std::string& path) {
     spec.consistency = j.value("consistency", std::string("on"));
     spec.nonlinear = j.value("nonlinear", false);
     spec.surfaceFormats = j.value("surface_formats", std::vector<std::string>{});
+    spec.surfaceOnly = j.value("surface_only", false);
+    const std::string arraysWhere = path + ": \"quality_arrays\"";
+    const json arrays = j.value("quality_arrays", json("all"));
+    std::string arraysText = "none";  // for []
+    if (arrays.is_string()) {
+      arraysText = arrays.get<std::string>();
+    } else if (arrays.is_array() && !arrays.empty()) {
+      arraysText.clear();
+      for (const json& a : arrays) {
+        if (!a.is_string()) throw InputError(arraysWhere + " lists " + a.dump() + ": not a name");
+        arraysText += (arraysText.empty() ? "" : ",") + a.get<std::string>();
+      }
+    } else if (!arrays.is_array()) {
+      throw InputError(arraysWhere + " is " + arrays.dump() +
+                       ": give \"all\", \"none\" or the names of the arrays");
+    }
+    spec.qualityArrays = parseQualityArrays(arraysText, arraysWhere);
+    if (spec.surfaceOnly && !spec.qualityArrays.all && !spec.qualityArrays.names.empty()) {
+      throw InputError(arraysWhere +
+                       " names arrays, but \"surface_only\" writes no .vtu to "
+                       "hold them");
+    }
     const json threads = j.value("threads", json(0));
     if (!threads.is_number_integer() || threads.get<double>() < 0 ||
         threads.get<double>() > kMaxThreads) {
