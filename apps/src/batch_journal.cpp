@@ -13,6 +13,7 @@
 #include <set>
 #include <sstream>
 
+#include "quality_arrays.h"
 #include "tetblend/core/error.h"
 #include "tetblend/meshing/atomic_file.h"
 #include "tetblend/pipeline/model_file.h"
@@ -77,7 +78,8 @@ std::string fingerprint(const BatchSpec& spec, const BatchJob& job, std::uint64_
   // Options at their defaults add nothing, so journals written before they
   // existed stay valid.
   if (spec.surfaceOnly) key += ";surface_only";
-  if (!spec.qualityArrays.all) key += ";quality_arrays=" + qualityArraysText(spec.qualityArrays);
+  const QualityArrays arrays = parseQualityArrays(spec.qualityArrays, "quality_arrays");
+  if (!arrays.all) key += ";quality_arrays=" + qualityArraysText(arrays);
   return hex64(fnv1a64(reinterpret_cast<const unsigned char*>(key.data()), key.size()));
 }
 

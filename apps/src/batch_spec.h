@@ -21,8 +21,6 @@
 #include <string>
 #include <vector>
 
-#include "quality_arrays.h"
-
 namespace tetblend::cli {
 
 /// One job as written in the spec. Its fields are checked when it runs, so a
@@ -42,15 +40,15 @@ struct BatchSpec {
   bool nonlinear = false;
   std::vector<std::string> surfaceFormats;
   bool surfaceOnly = false;
-  QualityArrays qualityArrays;
+  std::string qualityArrays = "all";  ///< the text of --quality-arrays; "a,b" for ["a", "b"]
   int threads = 0;
   std::vector<BatchJob> jobs;
 };
 
 /// Reads `path`. InputError (naming the file and the entry) for unreadable
-/// JSON, a missing model or jobs entry, a bad quality_arrays (or one naming
-/// arrays with surface_only), a job without a valid name, or two jobs with
-/// one name.
+/// JSON, a missing model or jobs entry, a quality_arrays neither a string nor
+/// an array of strings, a job without a valid name, or two jobs with one
+/// name.
 BatchSpec readBatchSpec(const std::string& path);
 
 }  // namespace tetblend::cli

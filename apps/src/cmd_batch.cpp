@@ -170,6 +170,12 @@ void runBatch(const BatchArgs& a) {
   const BatchSpec spec = readBatchSpec(a.spec);
   const std::vector<std::string> formats = parseSurfaceFormats(spec.surfaceFormats);
   const bool consistency = parseOnOff(spec.consistency, a.spec + ": \"consistency\"");
+  const std::string arraysWhere = a.spec + ": \"quality_arrays\"";
+  const QualityArrays arrays = parseQualityArrays(spec.qualityArrays, arraysWhere);
+  if (spec.surfaceOnly && !arrays.all && !arrays.names.empty()) {
+    throw InputError(arraysWhere +
+                     " names arrays, but \"surface_only\" writes no .vtu to hold them");
+  }
   std::vector<std::string> outputs;
   for (const char* name : {"summary.json", "summary.csv", "batch.pvd", kLockName, kJournalName})
     outputs.push_back((fs::path(spec.outputDir) / name).string());
@@ -262,10 +268,9 @@ void runBatch(const BatchArgs& a) {
             std::lock_guard<std::mutex> lock(blendMutex);
             shape = blendShape(*blender, model, weights, parseMethod(job.method));
           }
-          writeBlendResult(
-              o.files.front(), model, shape.vertices,
-              selectQualityArrays(shape.cellData, spec.qualityArrays, "\"quality_arrays\""),
-              formats);
+          writeBlendResult(o.files.front(), model, shape.vertices,
+                           selectQualityArrays(shape.cellData, arrays, "\"quality_arrays\""),
+                           formats);
           o.quality = shape.quality;
           json quality = json::object();
           for (const auto& c : qualityColumns(o.quality)) quality[c.first] = c.second;

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <set>
-#include <sstream>
 
 #include "tetblend/core/error.h"
 #include "tetblend/pipeline/blended_shape.h"
@@ -23,21 +22,20 @@ QualityArrays parseQualityArrays(const std::string& text, const std::string& wha
   if (text == "all") return {};
   if (text == "none") return {false, {}};
   const std::vector<std::string>& known = blendCellArrayNames();
+  const std::string use = "; use all, none or a comma-separated list of " + join(known);
+  if (text.empty()) throw InputError(what + ": empty" + use);
   std::set<std::string> asked;
-  std::istringstream in(text);
-  std::string name;
-  bool any = false;
-  while (std::getline(in, name, ',')) {
-    any = true;
+  std::size_t start = 0;
+  for (;;) {  // every comma-separated field, the empty last one of "a," included
+    const std::size_t comma = std::min(text.find(',', start), text.size());
+    const std::string name = text.substr(start, comma - start);
+    if (name.empty()) throw InputError(what + ": an empty array name in '" + text + "'" + use);
     if (std::find(known.begin(), known.end(), name) == known.end()) {
-      throw InputError(what + ": unknown quality array '" + name + "'; use all, none or " +
-                       "a comma-separated list of " + join(known));
+      throw InputError(what + ": unknown quality array '" + name + "'" + use);
     }
     asked.insert(name);
-  }
-  if (!any || text.back() == ',') {
-    throw InputError(what + ": '" + text + "' names no array; use all, none or a " +
-                     "comma-separated list of " + join(known));
+    if (comma == text.size()) break;
+    start = comma + 1;
   }
   QualityArrays choice{false, {}};
   for (const std::string& n : known)

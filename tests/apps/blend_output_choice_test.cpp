@@ -107,9 +107,9 @@ TEST_F(BlendOutputChoice, BadChoicesGiveOneLineAndNoFiles) {
     std::string message;
   } cases[] = {
       {"x.vtu", {"--quality-arrays", "volume"}, "unknown quality array 'volume'"},
-      {"x.vtu", {"--quality-arrays", ""}, "names no array"},
-      {"x.vtu", {"--quality-arrays", "inverted,"}, "names no array"},
-      {"x.vtu", {"--quality-arrays", "inverted,,distortion"}, "unknown quality array ''"},
+      {"x.vtu", {"--quality-arrays", ""}, "--quality-arrays: empty"},
+      {"x.vtu", {"--quality-arrays", "inverted,"}, "an empty array name in 'inverted,'"},
+      {"x.vtu", {"--quality-arrays", "inverted,,distortion"}, "an empty array name"},
       {"x.vtu", {"--quality-arrays", "excluded"}, "the model has no excluded tets"},
       {"x.vtu",
        {"--quality-arrays", "target_residual", "--method", "vertex-linear"},
