@@ -112,6 +112,15 @@ TEST_F(BatchOutputChoice, QualityArraysKeyChoosesTheCellArraysAndRerunsWhenChang
     ASSERT_EQ(r.code, 0) << r.err;
     EXPECT_EQ(cellArrayNames(readVtu(dir_ / "specs" / "q_out" / "a.vtu")), c.expected);
   }
+  // The same choice written another way is the same fingerprint: nothing reruns.
+  ASSERT_EQ(
+      batchFrom(dir_, writeSpec("q", {{"quality_arrays", "inverted,volume_ratio"}}).string()).code,
+      0);
+  const RunResult r = batchFrom(
+      dir_,
+      writeSpec("q", {{"quality_arrays", json::array({"volume_ratio", "inverted"})}}).string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(r.out.rfind("tetblend: batch: 0 of 2 jobs to run", 0), 0u) << r.out;
 }
 
 TEST_F(BatchOutputChoice, BadValuesAreOneLineAndWriteNothing) {
