@@ -13,6 +13,7 @@
 #include <set>
 #include <sstream>
 
+#include "quality_arrays.h"
 #include "tetblend/core/error.h"
 #include "tetblend/meshing/atomic_file.h"
 #include "tetblend/pipeline/model_file.h"
@@ -74,6 +75,11 @@ std::string fingerprint(const BatchSpec& spec, const BatchJob& job, std::uint64_
                     ";weights=" + job.weights.dump() + ";consistency=" + spec.consistency +
                     ";nonlinear=" + (spec.nonlinear ? "1" : "0") + ";formats=";
   for (const std::string& f : spec.surfaceFormats) key += f + ",";
+  // Options at their defaults add nothing, so journals written before they
+  // existed stay valid.
+  if (spec.surfaceOnly) key += ";surface_only";
+  const QualityArrays arrays = parseQualityArrays(spec.qualityArrays, "quality_arrays");
+  if (!arrays.all) key += ";quality_arrays=" + qualityArraysText(arrays);
   return hex64(fnv1a64(reinterpret_cast<const unsigned char*>(key.data()), key.size()));
 }
 

@@ -27,6 +27,24 @@ std::string resolve(const fs::path& base, const std::string& p) {
   return (path.is_absolute() ? path : base / path).lexically_normal().string();
 }
 
+// "quality_arrays" as the text of --quality-arrays: a string as is, an array
+// of names joined by commas ([] = "none"). The names are checked when the
+// batch runs (parseQualityArrays).
+std::string qualityArraysText(const json& value, const std::string& where) {
+  if (value.is_string()) return value.get<std::string>();
+  if (!value.is_array()) {
+    throw InputError(where + " is " + value.dump() +
+                     ": give \"all\", \"none\" or the names of the arrays");
+  }
+  if (value.empty()) return "none";
+  std::string text;
+  for (const json& name : value) {
+    if (!name.is_string()) throw InputError(where + " lists " + name.dump() + ": not a name");
+    text += (text.empty() ? "" : ",") + name.get<std::string>();
+  }
+  return text;
+}
+
 }  // namespace
 
 BatchSpec readBatchSpec(const std::string& path) {
@@ -50,6 +68,9 @@ BatchSpec readBatchSpec(const std::string& path) {
     spec.consistency = j.value("consistency", std::string("on"));
     spec.nonlinear = j.value("nonlinear", false);
     spec.surfaceFormats = j.value("surface_formats", std::vector<std::string>{});
+    spec.surfaceOnly = j.value("surface_only", false);
+    spec.qualityArrays =
+        qualityArraysText(j.value("quality_arrays", json("all")), path + ": \"quality_arrays\"");
     const json threads = j.value("threads", json(0));
     if (!threads.is_number_integer() || threads.get<double>() < 0 ||
         threads.get<double>() > kMaxThreads) {

@@ -7,11 +7,15 @@
 //     "consistency": "on",           rotation consistency, on|off (default on)
 //     "nonlinear": false,            nonlinear stitch (default false)
 //     "surface_formats": ["obj"],    extra surface files (default none)
+//     "surface_only": false,         write <name>.vtp alone, no .vtu (default false)
+//     "quality_arrays": "all",       .vtu cell arrays: "all", "none", "a,b" or
+//                                    ["a", "b"] (default all; quality_arrays.h)
 //     "threads": 0,                  job workers, 0 = all cores, at most 1024 (default 0)
 //     "jobs": [ {"name": "half", "weights": [0.5, 0], "method": "dq"}, ... ]
 //   }
 // A job's "name" (letters, digits, '-', '_', '.'; unique) names its output
-// files <output_dir>/<name>.vtu and .vtp; "method" overrides the default.
+// files <output_dir>/<name>.vtu and .vtp (only .vtp when surface_only);
+// "method" overrides the default.
 
 #include <nlohmann/json.hpp>
 #include <string>
@@ -35,13 +39,16 @@ struct BatchSpec {
   std::string consistency = "on";
   bool nonlinear = false;
   std::vector<std::string> surfaceFormats;
+  bool surfaceOnly = false;
+  std::string qualityArrays = "all";  ///< the text of --quality-arrays; "a,b" for ["a", "b"]
   int threads = 0;
   std::vector<BatchJob> jobs;
 };
 
 /// Reads `path`. InputError (naming the file and the entry) for unreadable
-/// JSON, a missing model or jobs entry, a job without a valid name, or two
-/// jobs with one name.
+/// JSON, a missing model or jobs entry, a quality_arrays neither a string nor
+/// an array of strings, a job without a valid name, or two jobs with one
+/// name.
 BatchSpec readBatchSpec(const std::string& path);
 
 }  // namespace tetblend::cli

@@ -1,6 +1,7 @@
 #include "blend_options.h"
 
 #include "tetblend/core/error.h"
+#include "tetblend/pipeline/blended_shape.h"
 
 namespace tetblend::cli {
 
@@ -20,6 +21,14 @@ void addBlendOptions(CLI::App& command, BlendSettings& settings) {
   command.add_option("--surface-format", settings.surfaceFormats,
                      "also write the surface as obj, ply and/or off beside the .vtp (repeatable; "
                      "default: .vtp only)");
+  std::string arrays;
+  for (const std::string& n : blendCellArrayNames()) arrays += (arrays.empty() ? "" : ", ") + n;
+  command
+      .add_option("--quality-arrays", settings.qualityArrays,
+                  "per-tet cell arrays written to each .vtu: all, none (the fastest to write) or "
+                  "a comma-separated list of " +
+                      arrays)
+      ->capture_default_str();
 }
 
 BlendMethod parseMethod(const std::string& name) { return blendMethodFromName(name); }

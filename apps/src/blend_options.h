@@ -1,7 +1,7 @@
 #pragma once
 // Options shared by the subcommands that blend (blend, batch, variations,
-// animate): the method, rotation consistency, the nonlinear stitch, and the
-// extra surface formats.
+// animate): the method, rotation consistency, the nonlinear stitch, the
+// extra surface formats and the quality arrays written.
 
 #include <CLI/CLI.hpp>
 #include <string>
@@ -17,9 +17,11 @@ struct BlendSettings {
   std::string consistency = "on";           ///< "on" or "off": consistent rotation logs
   bool nonlinear = false;                   ///< nonlinear stitch pass after the linear one
   std::vector<std::string> surfaceFormats;  ///< extra surface files beside the .vtp
+  std::string qualityArrays = "all";        ///< parseQualityArrays text: all, none or a,b
 };
 
-/// Adds --method, --consistency, --nonlinear and --surface-format.
+/// Adds --method, --consistency, --nonlinear, --surface-format and
+/// --quality-arrays.
 void addBlendOptions(CLI::App& command, BlendSettings& settings);
 
 /// The method named in `settings`; InputError listing the valid names.

@@ -31,28 +31,40 @@ std::vector<std::string> parseSurfaceFormats(const std::vector<std::string>& for
   return out;
 }
 
-std::vector<std::string> blendOutputFiles(const std::string& vtuPath,
+void checkBlendOutputPath(const std::string& outputPath, const std::string& what) {
+  const std::string extension = extensionOf(outputPath);
+  if (extension != ".vtu" && extension != ".vtp") {
+    throw InputError(what + " " + outputPath +
+                     ": the output must be a .vtu file (tets; the surface .vtp goes beside it) "
+                     "or a .vtp file (the surface only)");
+  }
+}
+
+std::vector<std::string> blendOutputFiles(const std::string& outputPath,
                                           const std::vector<std::string>& surfaceFormats) {
-  std::vector<std::string> files{vtuPath, withExtension(vtuPath, ".vtp")};
-  for (const std::string& f : surfaceFormats) files.push_back(withExtension(vtuPath, "." + f));
+  std::vector<std::string> files;
+  if (extensionOf(outputPath) == ".vtu") files.push_back(outputPath);
+  files.push_back(withExtension(outputPath, ".vtp"));
+  for (const std::string& f : surfaceFormats) files.push_back(withExtension(outputPath, "." + f));
   return files;
 }
 
-void writeBlendResult(const std::string& vtuPath, const ModelData& model, const Vertices& positions,
-                      const std::vector<NamedArray>& cellData,
+void writeBlendResult(const std::string& outputPath, const ModelData& model,
+                      const Vertices& positions, const std::vector<NamedArray>& cellData,
                       const std::vector<std::string>& surfaceFormats) {
-  if (extensionOf(vtuPath) != ".vtu") {
-    throw InputError(vtuPath + ": the output must be a .vtu file (the surface goes beside it)");
-  }
+  checkBlendOutputPath(outputPath, "output");
   if (positions.rows() != model.rest.vertices.rows()) {
-    throw InputError(vtuPath + ": " + std::to_string(positions.rows()) +
+    throw InputError(outputPath + ": " + std::to_string(positions.rows()) +
                      " blended vertices for a model of " +
                      std::to_string(model.rest.vertices.rows()));
   }
-  MeshDataArrays tetData;
-  tetData.pointData.push_back(displacementArray(positions, model.rest.vertices, positions.rows()));
-  tetData.cellData = cellData;
-  writeTetMesh(vtuPath, TetMesh{positions, model.rest.tets}, tetData);
+  if (extensionOf(outputPath) == ".vtu") {
+    MeshDataArrays tetData;
+    tetData.pointData.push_back(
+        displacementArray(positions, model.rest.vertices, positions.rows()));
+    tetData.cellData = cellData;
+    writeTetMesh(outputPath, TetMesh{positions, model.rest.tets}, tetData);
+  }
 
   const Eigen::Index ns = model.surfaceVertexCount;
   const SurfaceMesh surface{positions.topRows(ns), model.surfaceTriangles};
@@ -63,9 +75,9 @@ void writeBlendResult(const std::string& vtuPath, const ModelData& model, const 
   for (Eigen::Index i = 0; i < ns; ++i)
     inputIndex.values[static_cast<std::size_t>(i)] = static_cast<double>(i);
   surfaceData.pointData.push_back(std::move(inputIndex));
-  writeSurface(withExtension(vtuPath, ".vtp"), surface, surfaceData);
+  writeSurface(withExtension(outputPath, ".vtp"), surface, surfaceData);
   for (const std::string& f : surfaceFormats)
-    writeSurface(withExtension(vtuPath, "." + f), surface);
+    writeSurface(withExtension(outputPath, "." + f), surface);
 }
 
 }  // namespace tetblend::cli

@@ -7,6 +7,7 @@
 #include "blend_output.h"
 #include "cli_common.h"
 #include "progress.h"
+#include "quality_arrays.h"
 #include "tetblend/core/error.h"
 #include "tetblend/meshing/atomic_file.h"
 #include "tetblend/meshing/pvd_collection.h"
@@ -25,6 +26,7 @@ void blendSeries(const ModelData& model, const BlendSettings& settings,
   if (items.empty()) throw InputError("nothing to blend: the series is empty");
   const BlendMethod method = parseMethod(settings.method);
   const std::vector<std::string> formats = parseSurfaceFormats(settings.surfaceFormats);
+  const QualityArrays arrays = parseQualityArrays(settings.qualityArrays, "--quality-arrays");
   for (const SeriesItem& item : items)
     requireWeightCount(item.weights, model.examples.size(), "weights of " + item.name);
   std::vector<std::string> outputs = {(fs::path(dir) / (collection + ".pvd")).string(),
@@ -55,7 +57,7 @@ void blendSeries(const ModelData& model, const BlendSettings& settings,
       worst = item.name;
     }
     writeBlendResult((fs::path(dir) / (item.name + ".vtu")).string(), model, shape.vertices,
-                     shape.cellData, formats);
+                     selectQualityArrays(shape.cellData, arrays, "--quality-arrays"), formats);
     sets.push_back({item.time, item.name + ".vtu", 0});
     csv << item.name << "," << formatNumber(item.time);
     for (double w : item.weights) csv << "," << formatNumber(w);

@@ -17,13 +17,13 @@ struct SeriesItem {
   double time = 0.0;            ///< its time in the .pvd
 };
 
-/// Blends every item with `settings` (method, consistency, nonlinear) on a
-/// blender built once, writes <dir>/<name>.vtu and .vtp (+ surface formats)
-/// per item, <dir>/<collection>.pvd of all of them and <dir>/weights.csv
-/// (name, time, weights). Shows a progress bar unless `quiet`; ends with one
-/// warning line when some shapes have inverted tets. Refuses,
-/// before blending, outputs that are one of `inputs` or not regular files
-/// (checkOutputs).
+/// Blends every item with `settings` (method, consistency, nonlinear, quality
+/// arrays) on a blender built once, writes <dir>/<name>.vtu and .vtp
+/// (+ surface formats) per item, <dir>/<collection>.pvd of all of them and
+/// <dir>/weights.csv (name, time, weights). Shows a progress bar unless
+/// `quiet`; ends with one warning line when some shapes have inverted tets.
+/// Refuses, before blending, outputs that are one of `inputs` or not regular
+/// files (checkOutputs).
 void blendSeries(const ModelData& model, const BlendSettings& settings,
                  const std::vector<SeriesItem>& items, const std::string& dir,
                  const std::string& collection, const std::vector<std::string>& inputs, bool quiet);

@@ -13,6 +13,13 @@
 // line cut by a kill) and the atomic writer's temporaries of killed runs
 // (.<output name>.<digits>.tmp) are removed.
 //
+// summary.json: {"spec": the spec's file name, "model", "jobs": [{"name",
+// "method", "weights", "status" (done|failed), "fingerprint",
+// "skipped_this_run", "files", "seconds", "quality" (done jobs: the
+// qualityColumns), "error" (failed jobs)}]}; every path in it is relative to
+// the spec's folder, whatever the working directory. summary.csv has one row
+// per job: name, method, status, weights, the quality columns, seconds, error.
+//
 // One run per output directory: a run holds an exclusive flock on
 // <output_dir>/.tetblend-batch.lock (released by the kernel when the process
 // ends, even by kill -9); a second run on the same directory is refused.
@@ -40,6 +47,7 @@
 #include "cli_common.h"
 #include "commands.h"
 #include "progress.h"
+#include "quality_arrays.h"
 #include "tetblend/core/error.h"
 #include "tetblend/meshing/atomic_file.h"
 #include "tetblend/meshing/pvd_collection.h"
@@ -90,9 +98,18 @@ std::string csvField(const std::string& text) {
   return quoted + "\"";
 }
 
+/// `path` relative to the spec's folder, so that summary.json reads the same
+/// from any working directory.
+std::string fromSpecFolder(const BatchSpec& spec, const std::string& path) {
+  const fs::path folder = fs::absolute(spec.specPath).parent_path().lexically_normal();
+  return fs::absolute(path).lexically_normal().lexically_relative(folder).string();
+}
+
 void writeSummaries(const BatchSpec& spec, const std::vector<std::string>& fingerprints,
                     const std::vector<JobOutcome>& outcomes) {
-  json summary{{"spec", spec.specPath}, {"model", spec.modelPath}, {"jobs", json::array()}};
+  json summary{{"spec", fromSpecFolder(spec, spec.specPath)},
+               {"model", fromSpecFolder(spec, spec.modelPath)},
+               {"jobs", json::array()}};
   std::ostringstream csv;
   csv << "name,method,status,weights";
   for (const auto& c : qualityColumns(QualitySummary{})) csv << "," << c.first;
@@ -100,13 +117,15 @@ void writeSummaries(const BatchSpec& spec, const std::vector<std::string>& finge
   for (std::size_t i = 0; i < spec.jobs.size(); ++i) {
     const BatchJob& job = spec.jobs[i];
     const JobOutcome& o = outcomes[i];
+    json files = json::array();
+    for (const std::string& f : o.files) files.push_back(fromSpecFolder(spec, f));
     json entry{{"name", job.name},
                {"method", job.method},
                {"weights", job.weights},
                {"status", o.done ? "done" : "failed"},
                {"fingerprint", fingerprints[i]},
                {"skipped_this_run", o.skipped},
-               {"files", o.files},
+               {"files", files},
                {"seconds", o.seconds}};
     json quality = o.previousQuality;
     if (o.done && !o.skipped) {
@@ -151,12 +170,19 @@ void runBatch(const BatchArgs& a) {
   const BatchSpec spec = readBatchSpec(a.spec);
   const std::vector<std::string> formats = parseSurfaceFormats(spec.surfaceFormats);
   const bool consistency = parseOnOff(spec.consistency, a.spec + ": \"consistency\"");
+  const std::string arraysWhere = a.spec + ": \"quality_arrays\"";
+  const QualityArrays arrays = parseQualityArrays(spec.qualityArrays, arraysWhere);
+  if (spec.surfaceOnly && !arrays.all && !arrays.names.empty()) {
+    throw InputError(arraysWhere +
+                     " names arrays, but \"surface_only\" writes no .vtu to hold them");
+  }
   std::vector<std::string> outputs;
   for (const char* name : {"summary.json", "summary.csv", "batch.pvd", kLockName, kJournalName})
     outputs.push_back((fs::path(spec.outputDir) / name).string());
+  const std::string extension = spec.surfaceOnly ? ".vtp" : ".vtu";
   for (const BatchJob& job : spec.jobs) {
     for (const std::string& f :
-         blendOutputFiles((fs::path(spec.outputDir) / (job.name + ".vtu")).string(), formats))
+         blendOutputFiles((fs::path(spec.outputDir) / (job.name + extension)).string(), formats))
       outputs.push_back(f);
   }
   checkOutputs(outputs, {a.spec, spec.modelPath});
@@ -177,8 +203,8 @@ void runBatch(const BatchArgs& a) {
   for (std::size_t i = 0; i < n; ++i) {
     const BatchJob& job = spec.jobs[i];
     fingerprints[i] = fingerprint(spec, job, modelHash);
-    const std::string vtu = (fs::path(spec.outputDir) / (job.name + ".vtu")).string();
-    outcomes[i].files = blendOutputFiles(vtu, formats);
+    const std::string primary = (fs::path(spec.outputDir) / (job.name + extension)).string();
+    outcomes[i].files = blendOutputFiles(primary, formats);
     const auto record = previous.find(job.name);
     bool skip = record != previous.end() &&
                 record->second["fingerprint"].get<std::string>() == fingerprints[i];
@@ -242,7 +268,9 @@ void runBatch(const BatchArgs& a) {
             std::lock_guard<std::mutex> lock(blendMutex);
             shape = blendShape(*blender, model, weights, parseMethod(job.method));
           }
-          writeBlendResult(o.files.front(), model, shape.vertices, shape.cellData, formats);
+          writeBlendResult(o.files.front(), model, shape.vertices,
+                           selectQualityArrays(shape.cellData, arrays, "\"quality_arrays\""),
+                           formats);
           o.quality = shape.quality;
           json quality = json::object();
           for (const auto& c : qualityColumns(o.quality)) quality[c.first] = c.second;
@@ -272,7 +300,7 @@ void runBatch(const BatchArgs& a) {
   std::string firstError;
   for (std::size_t i = 0; i < n; ++i) {
     if (outcomes[i].done) {
-      sets.push_back({static_cast<double>(i), spec.jobs[i].name + ".vtu", 0});
+      sets.push_back({static_cast<double>(i), spec.jobs[i].name + extension, 0});
     } else if (failed++ == 0) {
       firstError = "job '" + spec.jobs[i].name + "': " + outcomes[i].error;
     }
@@ -291,15 +319,19 @@ void registerBatch(CLI::App& root) {
   CLI::App* cmd = root.add_subcommand(
       "batch",
       "Run the blend jobs of a JSON spec over one model, in parallel. Writes <output_dir>/<job>"
-      ".vtu and .vtp per job, batch.pvd (all finished jobs, time = job index), summary.json and "
+      ".vtu and .vtp per job (only the .vtp with \"surface_only\"), batch.pvd (all finished "
+      "jobs, time = job index), summary.json (paths relative to the spec's folder) and "
       "summary.csv (quality figures per job). A failing job is reported and the others go on; "
       "the exit code is non-zero if any failed. The first line on stdout says how many jobs run, "
-      "how many a re-run skips and why, and the output folder. A second run on the same output_dir while one "
+      "how many a re-run skips and why, and the output folder. A second run on the same output_dir "
+      "while one "
       "is running is refused. Re-running (also after a kill) skips jobs that the journal "
       "<output_dir>/.tetblend-batch.journal records as done with the same fingerprint (model "
       "bytes, method, weights, options) whose files exist. "
       "Spec: {\"model\", \"output_dir\" (default <spec>_out), \"method\" (default kaji), "
-      "\"consistency\" (on), \"nonlinear\" (false), \"surface_formats\" ([]), \"threads\" (0), "
+      "\"consistency\" (on), \"nonlinear\" (false), \"surface_formats\" ([]), \"surface_only\" "
+      "(false), \"quality_arrays\" (\"all\"; \"none\" or names, as --quality-arrays of blend), "
+      "\"threads\" (0), "
       "\"jobs\": [{\"name\", \"weights\": [..], \"method\"}]}; paths relative to the spec.");
   cmd->add_option("SPEC", args->spec, "batch spec (.json)")->required();
   cmd->add_option("--threads", args->threads,

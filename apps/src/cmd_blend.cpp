@@ -9,6 +9,7 @@
 #include "commands.h"
 #include "prepare_options.h"
 #include "progress.h"
+#include "quality_arrays.h"
 #include "tetblend/core/error.h"
 #include "tetblend/pipeline/blended_shape.h"
 #include "tetblend/pipeline/make_blender.h"
@@ -33,8 +34,11 @@ void runBlend(const BlendArgs& a) {
     throw InputError("give either a MODEL file or --rest with --example files, not both");
   }
   if (!fromModel && a.examples.empty()) throw InputError("--rest needs at least one --example");
-  if (extensionOf(a.output) != ".vtu") {
-    throw InputError("-o " + a.output + ": the output must be a .vtu file");
+  checkBlendOutputPath(a.output, "-o");
+  const QualityArrays arrays = parseQualityArrays(a.blend.qualityArrays, "--quality-arrays");
+  if (extensionOf(a.output) == ".vtp" && !arrays.all && !arrays.names.empty()) {
+    throw InputError("--quality-arrays " + a.blend.qualityArrays + ": -o " + a.output +
+                     " writes the surface only, which has no per-tet arrays; write a .vtu");
   }
   const std::vector<double> weights = parseWeights(a.weights, "--weights");
   const BlendMethod method = parseMethod(a.blend.method);
@@ -55,7 +59,8 @@ void runBlend(const BlendArgs& a) {
   progress.advance();
   const BlendedShape shape = blendShape(blender, model, weights, method);
   progress.advance();
-  writeBlendResult(a.output, model, shape.vertices, shape.cellData, formats);
+  writeBlendResult(a.output, model, shape.vertices,
+                   selectQualityArrays(shape.cellData, arrays, "--quality-arrays"), formats);
   progress.advance();
   progress.finish();
   if (shape.quality.invertedCount > 0) {
@@ -72,8 +77,9 @@ void registerBlend(CLI::App& root) {
   CLI::App* cmd = root.add_subcommand(
       "blend",
       "Blend the examples at one weight vector. Writes the tets to OUT.vtu (point data "
-      "'displacement' from the rest; cell data: per-tet quality) and the surface, in the rest "
-      "surface's vertex order, to OUT.vtp beside it. Weights: one per example, any reals; the "
+      "'displacement' from the rest; cell data: per-tet quality, see --quality-arrays) and the "
+      "surface, in the rest surface's vertex order, to OUT.vtp beside it; -o OUT.vtp writes the "
+      "surface only. Weights: one per example, any reals; the "
       "rest has weight 1 - sum(w), so all zeros give the rest and a unit vector an example.");
   cmd->add_option("MODEL", args->model, "model file made by 'tetblend prepare'");
   cmd->add_option("--rest", args->rest, "rest surface (instead of MODEL; prepared on the fly)");
@@ -81,7 +87,8 @@ void registerBlend(CLI::App& root) {
                   "example surface with the rest's triangles (repeat for each example)");
   cmd->add_option("-w,--weights", args->weights, "comma-separated weights, one per example")
       ->required();
-  cmd->add_option("-o,--output", args->output, "output .vtu file (the .vtp goes beside it)")
+  cmd->add_option("-o,--output", args->output,
+                  "output .vtu file (the .vtp goes beside it), or .vtp for the surface only")
       ->required();
   addBlendOptions(*cmd, args->blend);
   addPrepareOptions(*cmd, args->prepare);

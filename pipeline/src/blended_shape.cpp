@@ -80,6 +80,12 @@ BlendedShape blendShape(const ShapeBlender& blender, const ModelData& model,
   return shape;
 }
 
+const std::vector<std::string>& blendCellArrayNames() {
+  static const std::vector<std::string> names = {"volume_ratio",   "inverted",        "distortion",
+                                                 "rotation_angle", "target_residual", "excluded"};
+  return names;
+}
+
 std::vector<std::pair<std::string, double>> qualityColumns(const QualitySummary& q) {
   const std::vector<std::pair<std::string, double>> all = {
       {"min_volume_ratio", q.volumeRatio.min},

@@ -40,6 +40,11 @@ BlendResult checkedBlend(const ShapeBlender& blender, const std::vector<double>&
 BlendedShape blendShape(const ShapeBlender& blender, const ModelData& model,
                         const std::vector<double>& weights, BlendMethod method);
 
+/// The names of every cell array blendShape can make, in its order:
+/// volume_ratio, inverted, distortion, rotation_angle, target_residual,
+/// excluded.
+const std::vector<std::string>& blendCellArrayNames();
+
 /// Column names and values of a QualitySummary, in table order:
 /// min/max_volume_ratio, inverted_tets, mean/max_target_residual,
 /// mean/max_distortion, mean/max_rotation_angle (radians). A value that is
