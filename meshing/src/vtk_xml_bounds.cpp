@@ -82,13 +82,19 @@ struct Layout {
   std::uint64_t ratio = kZlibRatio;
 };
 
-std::uint64_t word(std::string_view bytes, std::size_t index, const Layout& layout) {
+// The unsigned value of the `size`-byte integer at `bytes[at]`.
+std::uint64_t integerAt(std::string_view bytes, std::size_t at, std::size_t size,
+                        bool bigEndian) {
   std::uint64_t value = 0;
-  for (std::size_t i = 0; i < layout.word; ++i) {
-    const std::size_t at = index * layout.word + (layout.bigEndian ? i : layout.word - 1 - i);
-    value = (value << 8) | static_cast<unsigned char>(bytes[at]);
+  for (std::size_t i = 0; i < size; ++i) {
+    value = (value << 8) | static_cast<unsigned char>(bytes[at + (bigEndian ? i : size - 1 - i)]);
   }
   return value;
+}
+
+// Header word `index` (UInt32 or UInt64, the file's byte order).
+std::uint64_t word(std::string_view bytes, std::size_t index, const Layout& layout) {
+  return integerAt(bytes, index * layout.word, layout.word, layout.bigEndian);
 }
 
 // Checks the compression header at the start of `header` (decoded bytes);
@@ -135,15 +141,6 @@ std::size_t integerSize(std::string_view type) {
   return 0;
 }
 
-// The unsigned value of the `size`-byte integer at `bytes[at]`.
-std::uint64_t integerAt(std::string_view bytes, std::size_t at, std::size_t size,
-                        bool bigEndian) {
-  std::uint64_t value = 0;
-  for (std::size_t i = 0; i < size; ++i) {
-    value = (value << 8) | static_cast<unsigned char>(bytes[at + (bigEndian ? i : size - 1 - i)]);
-  }
-  return value;
-}
 
 // Where an array's bytes are: raw (appended raw data) or base64.
 struct ArrayBytes {

@@ -19,6 +19,7 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -128,6 +129,14 @@ inline vtkSmartPointer<vtkPolyData> readVtp(const fs::path& p) {
 }
 
 /// Points of a VTK data set as #V by 3.
+/// The names of a grid's cell arrays.
+inline std::set<std::string> cellArrayNames(vtkUnstructuredGrid* grid) {
+  std::set<std::string> names;
+  for (int i = 0; i < grid->GetCellData()->GetNumberOfArrays(); ++i)
+    names.insert(grid->GetCellData()->GetArrayName(i));
+  return names;
+}
+
 inline Vertices pointsOf(vtkPointSet* data) {
   Vertices v(data->GetNumberOfPoints(), 3);
   for (vtkIdType i = 0; i < data->GetNumberOfPoints(); ++i) {

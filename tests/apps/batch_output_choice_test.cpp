@@ -10,15 +10,9 @@
 namespace tetblend::apps_test {
 namespace {
 
-using nlohmann::json;
 using Names = std::set<std::string>;
 
-Names cellArrayNames(vtkUnstructuredGrid* grid) {
-  Names names;
-  for (int i = 0; i < grid->GetCellData()->GetNumberOfArrays(); ++i)
-    names.insert(grid->GetCellData()->GetArrayName(i));
-  return names;
-}
+using nlohmann::json;
 
 class BatchOutputChoice : public ::testing::Test {
  protected:

@@ -12,12 +12,6 @@ namespace {
 
 using Names = std::set<std::string>;
 
-Names cellArrayNames(vtkUnstructuredGrid* grid) {
-  Names names;
-  for (int i = 0; i < grid->GetCellData()->GetNumberOfArrays(); ++i)
-    names.insert(grid->GetCellData()->GetArrayName(i));
-  return names;
-}
 
 /// Every value of array `name` of `a` and `b`, compared exactly (same blend,
 /// same computation: no tolerance).
