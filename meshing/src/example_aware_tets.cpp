@@ -140,9 +140,9 @@ CompatibleTetMeshes buildCompatibleTetMeshes(const TetMesh& rest, int surfaceVer
 
   // Stage 1: rigid edges and faces that leave a clean example's solid, then
   // all-surface tets an example inverts (no placement can help either).
-  const std::vector<Simplex> outside = rigidSimplicesOutside(
-      meshes.rest, surfaceVertexCount, boundary, exampleSurfaces, triangles,
-      meshes.selfIntersections);
+  const std::vector<Simplex> outside =
+      rigidSimplicesOutside(meshes.rest, surfaceVertexCount, boundary, exampleSurfaces, triangles,
+                            meshes.selfIntersections);
   if (!outside.empty() && options.maxRounds > 0) {
     meshes.rigidSimplicesOutside = static_cast<int>(outside.size());
     split(outside, meshes);
@@ -186,10 +186,12 @@ CompatibleTetMeshes buildCompatibleTetMeshes(const TetMesh& rest, int surfaceVer
   // Stage 3: refine where clean examples stay inverted, untangle again, one
   // example at a time, the one with the fewest inverted tets first (a hopeless
   // example refined first would split the others' remaining inverted tets
-  // too). A split halves an inverted tet into two that may both stay
-  // inverted, so a round may count more before the next one counts fewer: an
-  // example's rounds stop after kPatience rounds without a new best, and its
-  // best state is kept. Valid placements stay valid through every split.
+  // too), each with its own budget of maxRounds rounds (a budget shared by
+  // all examples was spent on the first few frames of an animation). A split
+  // halves an inverted tet into two that may both stay inverted, so a round
+  // may count more before the next one counts fewer: an example's rounds stop
+  // after kPatience rounds without a new best, and its best state is kept.
+  // Valid placements stay valid through every split.
   std::vector<std::size_t> order;
   for (std::size_t k = 0; k < exampleSurfaces.size(); ++k) {
     if (meshes.selfIntersections[k].pairCount == 0 && !meshes.examples[k].invertedTets.empty()) {
@@ -200,8 +202,8 @@ CompatibleTetMeshes buildCompatibleTetMeshes(const TetMesh& rest, int surfaceVer
     return meshes.examples[a].invertedTets.size() < meshes.examples[b].invertedTets.size();
   });
   if (!options.placement.untangle) order.clear();
-  int rounds = 0;
   for (std::size_t k : order) {
+    int rounds = 0;
     std::size_t best = meshes.examples[k].invertedTets.size();
     CompatibleTetMeshes bestMeshes;
     int sinceBest = 0;

@@ -23,13 +23,14 @@
 //  2. every example is placed (harmonic → ARAP → untangling,
 //     compatible_tets.h; one factorisation for all);
 //  3. while an example whose surface does not intersect itself keeps
-//     inverted tets (at most maxRounds rounds): those tets are split as in
-//     stage 1, or where they already have an interior vertex their longest
-//     interior edge is halved; every example's new vertices start at the
-//     centroid of their simplex in that example (a valid placement stays
-//     valid: each child tet has a positive fraction of its parent's volume)
-//     and only the still-inverted regions are untangled again (no new
-//     factorisation). Rounds stop early when the inverted count grows.
+//     inverted tets (at most maxRounds rounds per example): those tets are
+//     split as in stage 1, or where they already have an interior vertex
+//     their longest interior edge is halved; every example's new vertices
+//     start at the centroid of their simplex in that example (a valid
+//     placement stays valid: each child tet has a positive fraction of its
+//     parent's volume) and only the still-inverted regions are untangled
+//     again (no new factorisation). Rounds stop early when the inverted
+//     count grows.
 // Examples whose surface intersects itself cannot be embedded where it does;
 // they are untangled only locally (untangleMaxRings) so they fail fast, and
 // they do not drive refinement.
@@ -48,8 +49,8 @@ namespace tetblend {
 struct ExampleAwareOptions {
   /// Placement of the interior vertices on each round's mesh.
   CompatibleTetOptions placement;
-  /// Refinement rounds at most, in stage 1 and in stage 3 each (0: place on
-  /// the given mesh only).
+  /// Refinement rounds at most, in stage 1 and in stage 3 for each example
+  /// (0: place on the given mesh only).
   int maxRounds = 8;
   /// Free-region bound (tet rings) of the untangling of examples whose
   /// surface intersects itself (CompatibleTetOptions::untangleMaxRings).
