@@ -170,9 +170,9 @@ struct CompatibleTetBuilder::Impl {
 
   // Step 3: untangle growing neighbourhoods of the inverted tets until none
   // is left, the whole interior was free, or the region would pass
-  // `maxRings` rings (0: no bound). Returns the rounds performed. Keeps the
-  // attempt with the fewest inverted tets.
-  int untangleInverted(Vertices& positions, int maxRings) const {
+  // effort.maxRings rings (0: no bound). Returns the rounds performed. Keeps
+  // the attempt with the fewest inverted tets.
+  int untangleInverted(Vertices& positions, const UntangleEffort& effort) const {
     int rounds = 0;
     std::vector<int> inverted = invertedTets(positions, rest.tets);
     Vertices current = positions;
@@ -180,7 +180,7 @@ struct CompatibleTetBuilder::Impl {
       const std::vector<int> region = interiorRegion(inverted, rings);
       if (!region.empty()) {
         rounds += untangle(rest.tets, elements, region, options.untangleRounds,
-                           options.untangleIterationsPerRound, current)
+                           effort.iterationsPerRound, effort.stagnantRounds, current)
                       .rounds;
       }
       std::vector<int> now = invertedTets(current, rest.tets);
@@ -189,7 +189,7 @@ struct CompatibleTetBuilder::Impl {
         inverted = std::move(now);
       }
       if (static_cast<int>(region.size()) == interiorCount) break;
-      if (maxRings > 0 && 2 * rings > maxRings) break;
+      if (effort.maxRings > 0 && 2 * rings > effort.maxRings) break;
     }
     return rounds;
   }
@@ -397,7 +397,7 @@ CompatibleTetResult CompatibleTetBuilder::place(const Vertices& exampleSurface) 
   if (m.interiorCount > 0 && !harmonicAccepted) {
     m.arapSearch(exampleSurface, result);
     if (m.options.untangle) {
-      result.untangleRounds = m.untangleInverted(result.vertices, m.options.untangleMaxRings);
+      result.untangleRounds = m.untangleInverted(result.vertices, m.options.untangleEffort);
     }
     result.invertedTets = invertedTets(result.vertices, m.rest.tets);
   }
@@ -408,12 +408,13 @@ CompatibleTetResult CompatibleTetBuilder::place(const Vertices& exampleSurface) 
   return result;
 }
 
-CompatibleTetResult CompatibleTetBuilder::repair(const Vertices& start, int maxRings) const {
+CompatibleTetResult CompatibleTetBuilder::repair(const Vertices& start,
+                                                 const UntangleEffort& effort) const {
   const Impl& m = *impl_;
   m.requireExampleSurface(start, m.rest.vertices.rows());
   CompatibleTetResult result;
   result.vertices = start;
-  result.untangleRounds = m.untangleInverted(result.vertices, maxRings);
+  result.untangleRounds = m.untangleInverted(result.vertices, effort);
   CompatibleTetResult measured = evaluate(result.vertices);
   measured.untangleRounds = result.untangleRounds;
   return measured;

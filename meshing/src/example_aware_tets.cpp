@@ -172,9 +172,8 @@ CompatibleTetMeshes buildCompatibleTetMeshes(const TetMesh& rest, int surfaceVer
     CompatibleTetResult placed = builder.place(exampleSurfaces[k]);
     if (options.placement.untangle && !placed.invertedTets.empty()) {
       const bool clean = meshes.selfIntersections[k].pairCount == 0;
-      CompatibleTetResult repaired =
-          builder.repair(placed.vertices, clean ? options.placement.untangleMaxRings
-                                                : options.intersectingUntangleRings);
+      CompatibleTetResult repaired = builder.repair(
+          placed.vertices, clean ? options.placement.untangleEffort : options.intersectingUntangle);
       repaired.harmonicInvertedCount = placed.harmonicInvertedCount;
       repaired.arapIterations = placed.arapIterations;
       placed = std::move(repaired);
@@ -218,7 +217,7 @@ CompatibleTetMeshes buildCompatibleTetMeshes(const TetMesh& rest, int surfaceVer
       for (std::size_t j = 0; j < exampleSurfaces.size(); ++j) {
         CompatibleTetResult& example = meshes.examples[j];
         CompatibleTetResult updated =
-            j == k ? refined.repair(example.vertices, options.placement.untangleMaxRings)
+            j == k ? refined.repair(example.vertices, options.placement.untangleEffort)
                    : refined.evaluate(example.vertices);
         updated.harmonicInvertedCount = example.harmonicInvertedCount;
         updated.arapIterations = example.arapIterations;

@@ -37,6 +37,24 @@
 
 namespace tetblend {
 
+/// How far one untangling attempt goes before it gives up (the free region,
+/// the L-BFGS work per round, and when progress counts as stalled).
+struct UntangleEffort {
+  /// The free region stops growing past this many tet-rings (0: it grows
+  /// until the whole interior is free). A bound makes hopeless cases (an
+  /// example surface that intersects itself) fail fast.
+  int maxRings = 0;
+  /// Maximum L-BFGS iterations per untangling round. Each round only follows
+  /// the minimiser as ε shrinks: on the hard-pose corpus 30 iterations gave
+  /// the same valid placements as 100 in a third of the time (10 leave clean
+  /// poses of knot1, elephant and handle inverted).
+  int iterationsPerRound = 30;
+  /// The attempt gives up when this many rounds in a row did not raise the
+  /// smallest det F: the free region is too small (or the example cannot be
+  /// embedded), and a larger region or refinement is the remedy.
+  int stagnantRounds = 8;
+};
+
 /// Options of CompatibleTetBuilder, with their defaults.
 struct CompatibleTetOptions {
   /// Maximum number of ARAP local–global iterations (0 = harmonic only, or
@@ -65,14 +83,8 @@ struct CompatibleTetOptions {
   /// attempt. The regularisation shrinks by 10 % or more per round, so this
   /// bounds the attempt to a few decades of ε.
   int untangleRounds = 60;
-  /// Maximum L-BFGS iterations per untangling round. Each round only follows
-  /// the minimiser as ε shrinks: on the hard-pose corpus 30 iterations gave
-  /// the same valid placements as 100 in a third of the time.
-  int untangleIterationsPerRound = 30;
-  /// Untangling stops growing the free region past this many rings (0: it
-  /// grows until the whole interior is free). A bound makes hopeless cases
-  /// (an example surface that intersects itself) fail fast.
-  int untangleMaxRings = 0;
+  /// Free region, iterations per round and stall test of each attempt.
+  UntangleEffort untangleEffort;
 };
 
 /// One example's compatible tet mesh.
@@ -118,11 +130,11 @@ class CompatibleTetBuilder {
   Vertices harmonicExtension(const Vertices& exampleSurface) const;
 
   /// Step 3 only, from `start` (#V by 3; rows 0..#S-1 the example surface,
-  /// kept): untangles the interior around the inverted tets, the free region
-  /// growing up to `maxRings` rings (0: the whole interior). Returns the
-  /// result measured as by place (harmonicInvertedCount and arapIterations
-  /// are 0). Throws InputError on a wrong row count or non-finite positions.
-  CompatibleTetResult repair(const Vertices& start, int maxRings) const;
+  /// kept): untangles the interior around the inverted tets with `effort`
+  /// (the options' untangleRings and untangleRounds). Returns the result
+  /// measured as by place (harmonicInvertedCount and arapIterations are 0).
+  /// Throws InputError on a wrong row count or non-finite positions.
+  CompatibleTetResult repair(const Vertices& start, const UntangleEffort& effort) const;
 
   /// The inverted tets, ARAP energy and smallest volume ratio of `positions`
   /// (#V by 3), without moving anything.
