@@ -149,9 +149,9 @@ TEST(PoseCorpusRigidSimplices, PlacementAloneFailsWhereARigidSimplexLeavesTheExa
 
 // Stage 3's refinement rounds are budgeted per example: with a budget shared
 // by all examples, the first frames of a long animation spent it and later
-// clean frames kept inverted tets that their own rounds repair (8 of 48
-// skinned dino frames of the prepare rehearsal did, none with a budget per
-// example). Here the cactus's clean poses with a budget of one round: with
+// clean frames kept inverted tets that their own rounds repair (on 48
+// harshly skinned dino frames of the prepare rehearsal, 8 clean frames kept
+// some, 6 with a budget per example). Here the cactus's clean poses with a budget of one round: with
 // the shared budget twist720 spent it and twist1080 kept 28 inverted tets.
 TEST(PoseCorpusRefinementBudget, EveryCleanExampleGetsItsOwnRounds) {
 #if defined(__SANITIZE_ADDRESS__)
