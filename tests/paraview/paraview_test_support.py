@@ -1,0 +1,76 @@
+"""What the pvpython tests share (run inside pvpython by tools/run_pvpython.py;
+ctest passes the programs' and the plugin's paths in the environment)."""
+
+import os
+import subprocess
+
+import numpy as np
+from vtkmodules.util.numpy_support import vtk_to_numpy
+from vtkmodules.vtkIOImage import vtkPNGReader
+
+# A picture is blank when it is (nearly) one colour: at least this share of
+# its pixels must differ from the corner pixel (the background), and the
+# standard deviation of its grey values (0-255) must be at least this.
+MIN_FOREGROUND_SHARE = 0.02
+MIN_GREY_STDDEV = 5.0
+
+
+def run(*args):
+    """Runs a program; raises with its stderr when it fails."""
+    done = subprocess.run([str(a) for a in args], capture_output=True, text=True)
+    if done.returncode != 0:
+        raise RuntimeError("%s failed: %s" % (" ".join(map(str, args)), done.stderr))
+    return done
+
+
+def cli(*args):
+    """Runs the tetblend command line."""
+    return run(os.environ["TETBLEND_EXE"], *args)
+
+
+def output_folder(name):
+    """A fresh folder for one test's files, under the test's binary folder."""
+    folder = os.path.join(os.environ["TETBLEND_PV_TEST_DIR"], name)
+    os.makedirs(folder, exist_ok=True)
+    return folder
+
+
+def bar_model(folder):
+    """The samples' twisted and bent bar (1029 tets, 2 examples) prepared by
+    'tetblend prepare' into folder; returns its path."""
+    surfaces = os.path.join(folder, "surfaces")
+    run(os.environ["TETBLEND_MAKE_SAMPLES"], surfaces)
+    model = os.path.join(folder, "bar.tbm")
+    cli("prepare", *[os.path.join(surfaces, name)
+                     for name in ("bar_rest.obj", "bar_twist4pi.obj", "bar_bend.obj")],
+        "-o", model, "--quiet")
+    return model
+
+
+def png_pixels(path):
+    """The PNG's pixels as a (height, width, channels) uint8 array."""
+    reader = vtkPNGReader()
+    reader.SetFileName(path)
+    reader.Update()
+    image = reader.GetOutput()
+    width, height, _ = image.GetDimensions()
+    scalars = image.GetPointData().GetScalars()
+    return vtk_to_numpy(scalars).reshape(height, width, scalars.GetNumberOfComponents())
+
+
+def assert_not_blank(path):
+    """Fails unless the PNG shows something besides its background."""
+    pixels = png_pixels(path)[:, :, :3].astype(np.float64)
+    foreground = np.any(pixels != pixels[0, 0], axis=2).mean()
+    grey = pixels.mean(axis=2).std()
+    assert foreground >= MIN_FOREGROUND_SHARE and grey >= MIN_GREY_STDDEV, (
+        "%s is blank: %.4f of its pixels differ from the background (need %.2f), grey "
+        "standard deviation %.2f (need %.1f)" % (path, foreground, MIN_FOREGROUND_SHARE, grey,
+                                                 MIN_GREY_STDDEV))
+    return foreground, grey
+
+
+def vtk_process_libraries():
+    """The VTK shared libraries mapped into this process."""
+    with open("/proc/self/maps") as maps:
+        return {line.split()[-1] for line in maps if "libvtk" in line}
