@@ -48,14 +48,15 @@ def bar_model(folder):
 
 
 def png_pixels(path):
-    """The PNG's pixels as a (height, width, channels) uint8 array."""
+    """The PNG's pixels as a (height, width, channels) uint8 array, top row first
+    (VTK's images start at the bottom)."""
     reader = vtkPNGReader()
     reader.SetFileName(path)
     reader.Update()
     image = reader.GetOutput()
     width, height, _ = image.GetDimensions()
     scalars = image.GetPointData().GetScalars()
-    return vtk_to_numpy(scalars).reshape(height, width, scalars.GetNumberOfComponents())
+    return vtk_to_numpy(scalars).reshape(height, width, scalars.GetNumberOfComponents())[::-1]
 
 
 def assert_not_blank(path):
