@@ -32,8 +32,15 @@ def test_blend_equals_the_full_module(bar_model, method):
         assert np.array_equal(values, full_cells[name], equal_nan=True), name
 
 
-def test_has_its_own_errors(tmp_path):
+@pytest.mark.parametrize("module", [tetblend, tetblend_blend])
+def test_each_module_raises_its_own_errors(module, tmp_path):
+    # Regression: with both modules imported, a translator registered for
+    # every module made one module raise the other's classes.
+    with pytest.raises(module.InputError, match="missing.tbm") as raised:
+        module.load(str(tmp_path / "missing.tbm"))
+    assert type(raised.value).__module__ == module.__name__
+    assert issubclass(module.InputError, ValueError)
+
+
+def test_same_methods():
     assert tetblend_blend.methods() == tetblend.methods()
-    with pytest.raises(tetblend_blend.InputError, match="missing.tbm"):
-        tetblend_blend.load(str(tmp_path / "missing.tbm"))
-    assert issubclass(tetblend_blend.InputError, ValueError)
