@@ -1,6 +1,7 @@
 """What the pvpython tests share (run inside pvpython by tools/run_pvpython.py;
 ctest passes the programs' and the plugin's paths in the environment)."""
 
+import ctypes
 import os
 import subprocess
 
@@ -15,17 +16,41 @@ MIN_FOREGROUND_SHARE = 0.02
 MIN_GREY_STDDEV = 5.0
 
 
-def run(*args):
+def run(*args, env=None):
     """Runs a program; raises with its stderr when it fails."""
-    done = subprocess.run([str(a) for a in args], capture_output=True, text=True)
+    done = subprocess.run([str(a) for a in args], capture_output=True, text=True, env=env)
     if done.returncode != 0:
         raise RuntimeError("%s failed: %s" % (" ".join(map(str, args)), done.stderr))
     return done
 
 
-def cli(*args):
-    """Runs the tetblend command line."""
-    return run(os.environ["TETBLEND_EXE"], *args)
+def cli(*args, preload=None):
+    """Runs the tetblend command line, with the library `preload` (a path)
+    in LD_PRELOAD when given."""
+    env = dict(os.environ, LD_PRELOAD=preload) if preload else None
+    return run(os.environ["TETBLEND_EXE"], *args, env=env)
+
+
+class _DlInfo(ctypes.Structure):
+    _fields_ = [("dli_fname", ctypes.c_char_p), ("dli_fbase", ctypes.c_void_p),
+                ("dli_sname", ctypes.c_char_p), ("dli_saddr", ctypes.c_void_p)]
+
+
+def global_blas():
+    """The library this process's global symbols take dgemm_ from, or None.
+    A module loaded later (CHOLMOD, through tetblend_blend) binds its BLAS
+    calls there first: pvpython has OpenBLAS's libblas.so.3 loaded globally,
+    while the tetblend program binds ATLAS's libf77blas, a direct dependency."""
+    try:
+        dgemm = ctypes.CDLL(None).dgemm_
+    except AttributeError:
+        return None
+    dladdr = ctypes.CDLL("libc.so.6").dladdr
+    dladdr.argtypes = [ctypes.c_void_p, ctypes.POINTER(_DlInfo)]
+    info = _DlInfo()
+    if not dladdr(ctypes.cast(dgemm, ctypes.c_void_p), ctypes.byref(info)):
+        return None
+    return os.fsdecode(info.dli_fname)
 
 
 def output_folder(name):

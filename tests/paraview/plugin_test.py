@@ -1,7 +1,7 @@
 """The ParaView plugin (paraview_plugin/tetblend_plugin.py) in pvpython:
 loaded with LoadPlugin, it outputs what tetblend_blend computes in the same
-process, bit for bit, and what 'tetblend blend' writes, to rounding, for the
-weights, the method drop-down and the consistency switch; its output renders.
+process and what 'tetblend blend' writes, bit for bit, for the weights, the
+method drop-down and the consistency switch; its output renders.
 
 Run by ctest through tools/run_pvpython.py (pvpython under xvfb-run)."""
 
@@ -16,18 +16,13 @@ from vtkmodules.util.numpy_support import vtk_to_numpy
 
 import paraview_test_support as support
 
-# The plugin against the command line's .vtu (float64, zlib: lossless). Not
-# bit for bit: CHOLMOD's supernodal kernels (dgemm, dsyrk, dtrsm) bind to
-# ATLAS's libf77blas in the tetblend program (a direct dependency through
-# Ceres, ahead of libblas) but to OpenBLAS's libblas.so.3 in pvpython, which
-# loads it globally before the module; the two round differently (seen:
-# 1.6e-14 on the bar, diagonal 2.4). Positions: relative to the bounding-box
-# diagonal; cell arrays (volume ratio, distortion, radians): relative, with an
-# absolute floor for values near 0. The flags inverted and excluded are exact.
-POSITION_TOLERANCE = 1e-12
-ARRAY_RELATIVE_TOLERANCE = 1e-9
-ARRAY_ABSOLUTE_TOLERANCE = 1e-12
-EXACT_ARRAYS = {"inverted", "excluded"}
+# The command line's .vtu keeps float64 (zlib is lossless) and the plugin runs
+# the same blender, so the comparisons are exact, once both use one BLAS:
+# CHOLMOD's supernodal kernels (dgemm, dsyrk, dtrsm) bind to ATLAS's
+# libf77blas in the tetblend program but to OpenBLAS's libblas.so.3 in
+# pvpython, and the two round differently (1.6e-14 apart on the bar, diagonal
+# 2.4). The program runs with this process's BLAS preloaded.
+BLAS = support.global_blas()
 
 # (weights, method, consistency): the drop-down's default and two others, the
 # switch both ways, and the rest.
@@ -53,7 +48,8 @@ def cli_blend(model, folder, weights, method, consistency):
     """The points and arrays of 'tetblend blend' read back by ParaView's reader."""
     path = os.path.join(folder, "cli_%s_%s.vtu" % (method, "_".join(map(str, weights))))
     support.cli("blend", model, "--weights", ",".join(map(str, weights)), "--method", method,
-                "--consistency", "on" if consistency else "off", "-o", path, "--quiet")
+                "--consistency", "on" if consistency else "off", "-o", path, "--quiet",
+                preload=BLAS)
     reader = XMLUnstructuredGridReader(FileName=[path])
     data = servermanager.Fetch(reader)
     Delete(reader)
@@ -78,28 +74,22 @@ def check_blend(source, model, folder, weights, method, consistency):
     for name, values in cells.items():
         assert np.array_equal(cell_data[name], values, equal_nan=True), "%s: %s" % (case, name)
 
-    # The command line: same tets, same array names, values to rounding.
+    # The command line: the same tets, points and arrays.
     (cli_points, cli_point_data, cli_cell_data), cli_cells = cli_blend(
         model, folder, weights, method, consistency)
     assert output.GetNumberOfCells() == cli_cells == len(loaded.tets), case
-    diagonal = np.linalg.norm(cli_points.max(axis=0) - cli_points.min(axis=0))
-    deviation = np.abs(points - cli_points).max() / diagonal
-    assert deviation <= POSITION_TOLERANCE, "%s: points differ from the CLI's by %g diagonals" % (
-        case, deviation)
+    assert np.array_equal(points, cli_points), "%s: points differ from the CLI's by up to %g" % (
+        case, np.abs(points - cli_points).max())
     assert point_data.keys() == cli_point_data.keys() == {"displacement"}, case
     assert cell_data.keys() == cli_cell_data.keys(), "%s: %s != %s" % (
         case, sorted(cell_data), sorted(cli_cell_data))
     assert QUALITY_ARRAYS <= cell_data.keys(), case
-    for name, values in cell_data.items():
-        if name in EXACT_ARRAYS:
-            assert np.array_equal(values, cli_cell_data[name]), "%s: %s" % (case, name)
-        else:
-            assert np.allclose(values, cli_cell_data[name], rtol=ARRAY_RELATIVE_TOLERANCE,
-                               atol=ARRAY_ABSOLUTE_TOLERANCE, equal_nan=True), (
-                "%s: %s differs from the CLI's" % (case, name))
-    print("plugin_test: %s: equals tetblend_blend's blend, the CLI's to %.1e diagonals "
-          "(%d points, %d tets, cell arrays %s)" % (case, deviation, len(points), cli_cells,
-                                                    ", ".join(sorted(cell_data))))
+    for name, values in list(point_data.items()) + list(cell_data.items()):
+        theirs = cli_point_data.get(name, cli_cell_data.get(name))
+        assert np.array_equal(values, theirs, equal_nan=True), "%s: array %s differs" % (case, name)
+    print("plugin_test: %s: equals tetblend_blend's blend and the CLI's .vtu (%d points, %d "
+          "tets, cell arrays %s; BLAS %s)" % (case, len(points), cli_cells,
+                                              ", ".join(sorted(cell_data)), BLAS))
 
 
 def check_screenshot(source, folder):
