@@ -79,6 +79,11 @@ def main(argv):
     args = parse(argv)
     weights = [float(w) for w in args.weights.split(",")]
     LoadPlugin(args.plugin, remote=False, ns=globals())
+    import tetblend_blend  # importable once the plugin is loaded (it finds it)
+    examples = tetblend_blend.load(args.model).example_count
+    if len(weights) != examples:
+        sys.exit("compare_methods.py: %s has %d examples, --weights gives %d weights"
+                 % (args.model, examples, len(weights)))
     make_source = globals()["TetblendBlend"]
     methods = make_source().GetProperty("Method").Available  # the drop-down's entries
     lut = GetColorTransferFunction("volume_ratio")
