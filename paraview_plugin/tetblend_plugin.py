@@ -7,8 +7,9 @@ point data displacement (blend - rest), cell data the per-tet quality
 a model with excluded tets, excluded). Properties: FileName; Method (every
 method of tetblend_blend.methods()); Consistency (consistent rotation
 logarithms, as 'tetblend blend --consistency'); Weight1 ... Weight16, one
-slider per example (a model's first example_count sliders are used; examples
-past the sixteenth get weight 0, with a warning).
+slider per example: the panel shows as many as the loaded model has examples
+(the information property ExampleSliders), and examples past the sixteenth
+get weight 0, with a warning.
 
 A change of weights, method or consistency re-blends the loaded model: the
 model file is read once per FileName, and each (method, consistency) pair
@@ -42,8 +43,8 @@ except ImportError:
 paraview_plugin_name = "tetblend"
 paraview_plugin_version = "0.1"
 
-# Sliders in the properties panel (ParaView's properties are fixed when the
-# plugin loads, before any model is known).
+# Weight sliders defined (ParaView's properties are fixed when the plugin
+# loads, before any model is known; the panel hides those a model does not use).
 WEIGHT_SLIDERS = 16
 METHODS = tetblend_blend.methods()
 
@@ -63,13 +64,18 @@ def tet_cells(tets):
 def _properties_xml():
     """The source's properties, in panel order."""
     methods = "".join('<Entry value="%d" text="%s"/>' % (i, name) for i, name in enumerate(METHODS))
+    # Slider k shows when the model has at least k examples.
     weights = "".join(
         """<DoubleVectorProperty name="Weight%(k)d" label="Weight %(k)d" command="SetWeight%(k)d"
                number_of_elements="1" default_values="0">
              <DoubleRangeDomain name="range" min="0" max="1"/>
              <Documentation>Weight of example %(k)d (any real number may be typed; the rest
                gets 1 - sum of the weights).</Documentation>
-           </DoubleVectorProperty>""" % {"k": k + 1} for k in range(WEIGHT_SLIDERS))
+             <Hints><PropertyWidgetDecorator type="GenericDecorator" mode="visibility"
+               property="ExampleSliders" values="%(counts)s"/></Hints>
+           </DoubleVectorProperty>""" % {
+            "k": k + 1, "counts": " ".join(str(n) for n in range(k + 1, WEIGHT_SLIDERS + 1))}
+        for k in range(WEIGHT_SLIDERS))
     return """
       <StringVectorProperty name="FileName" command="SetFileName" number_of_elements="1">
         <FileListDomain name="files"/>
@@ -87,7 +93,13 @@ def _properties_xml():
         <Documentation>Consistent rotation logarithms across neighbouring tets (kaji,
           liebodies): turns beyond pi blend through the turn instead of collapsing.</Documentation>
       </IntVectorProperty>
-      %(weights)s""" % {"kaji": METHODS.index("kaji"), "methods": methods, "weights": weights}
+      <IntVectorProperty name="ExampleSliders" command="GetExampleSliders"
+                         information_only="1" number_of_elements="1" default_values="0">
+        <SimpleIntInformationHelper/>
+        <Documentation>The sliders the loaded model uses: its example count, at most
+          %(sliders)d.</Documentation>
+      </IntVectorProperty>
+      %(weights)s""" % {"sliders": WEIGHT_SLIDERS, "kaji": METHODS.index("kaji"), "methods": methods, "weights": weights}
 
 
 class TetblendBlend(VTKPythonAlgorithmBase):
@@ -123,6 +135,16 @@ class TetblendBlend(VTKPythonAlgorithmBase):
         if value != self._weights[slider]:
             self._weights[slider] = value
             self.Modified()
+
+    def GetExampleSliders(self):
+        if self._model is None:
+            return 0
+        return min(self._model.example_count, WEIGHT_SLIDERS)
+
+    def RequestInformation(self, request, inInfo, outInfo):
+        if self._file_name:
+            self._loaded_model()
+        return 1
 
     def _loaded_model(self):
         if self._model_file != self._file_name:

@@ -115,7 +115,12 @@ def main():
     folder = support.output_folder("plugin")
     model = support.bar_model(folder)
     LoadPlugin(os.environ["TETBLEND_PLUGIN"], remote=False, ns=globals())
-    source = globals()["TetblendBlend"](FileName=model)
+    source = globals()["TetblendBlend"]()
+    source.UpdatePipelineInformation()
+    assert source.GetProperty("ExampleSliders").GetData() == 0
+    source.FileName = model
+    source.UpdatePipelineInformation()  # the panel shows this many weight sliders
+    assert source.GetProperty("ExampleSliders").GetData() == 2
     for weights, method, consistency in CASES:
         check_blend(source, model, folder, weights, method, consistency)
     check_screenshot(source, folder)
