@@ -13,6 +13,10 @@ packages=(
   pybind11-dev python3-dev python3-numpy python3-pytest
   clang libclang-rt-14-dev  # libFuzzer + ASan/UBSan runtimes for ./dev.sh fuzz
   libcgal-demo  # closed test meshes: data.tar.gz with data/meshes/*.off
+  # ParaView's libraries and an X server for the pvpython tests. pvpython
+  # itself (python3-paraview) conflicts with libvtk9-dev's python3-vtk9: the
+  # tests unpack it into the build tree instead (tools/run_pvpython.py).
+  paraview xvfb
   # Multithreaded BLAS for CHOLMOD's supernodal factorisations (becomes the
   # libblas.so.3 alternative): the 1M-tet compatible-mesh factorisation takes
   # ~4 s instead of ~6.5 s with ATLAS on 2 cores.

@@ -10,7 +10,9 @@
 # the tets that pose cannot embed and leaves them out of the stitch).
 # Committed here: batch.json (the batch spec, copied beside the model because
 # its paths are relative to the spec), probe_handles.json (the deformer's
-# handles) and show_quality.py (pvpython: colour a .pvd by quality).
+# handles), show_quality.py (pvpython: colour a .pvd by quality) and
+# compare_methods.py (pvpython: every method in one PNG; run here through
+# tools/run_pvpython.py, skipped with the reason when pvpython cannot be had).
 set -euo pipefail
 if [ $# -ne 2 ]; then
   sed -n '2,3p' "$0"
@@ -65,6 +67,17 @@ for m in kaji dqs; do
   "$tb" deform "$s/bar_rest.obj" --handles "$here/probe_handles.json" --method "$m" \
     -o "$out/deform/bar_probe_$m.vtp"
 done
+
+step "every method at half the twist, one picture (pvpython; README figure)"
+status=0
+/usr/bin/python3 "$here/../tools/run_pvpython.py" "$build/pvpython" "$here/compare_methods.py" \
+  "$out/bar.tbm" --weights 0.5,0 -o "$out/compare_methods.png" \
+  --plugin "$build/python/tetblend_plugin.py" 2> "$out/compare_methods.log" || status=$?
+case $status in
+  0) echo "   $out/compare_methods.png" ;;
+  77) echo "   skipped: $(tail -n 1 "$out/compare_methods.log")" ;;
+  *) cat "$out/compare_methods.log" >&2; exit "$status" ;;
+esac
 
 step "done: open $out/batch/batch.pvd or $out/animation/animation.pvd in ParaView"
 echo "   (pvpython $here/show_quality.py $out/batch/batch.pvd volume_ratio)"

@@ -18,7 +18,7 @@ PyObject* numericalErrorType = nullptr;
 PyObject* resourceErrorType = nullptr;
 
 PyObject* newException(py::module_& module, const char* name, py::tuple bases, const char* doc) {
-  const std::string qualified = std::string("tetblend.") + name;
+  const std::string qualified = module.attr("__name__").cast<std::string>() + "." + name;
   PyObject* type = PyErr_NewExceptionWithDoc(qualified.c_str(), doc, bases.ptr(), nullptr);
   if (type == nullptr) throw py::error_already_set();
   module.attr(name) = py::handle(type);
@@ -46,7 +46,7 @@ void registerErrors(py::module_& module) {
       newException(module, "ResourceError", py::make_tuple(base, py::handle(PyExc_MemoryError)),
                    "The machine lacks the memory the work needs; the message says how much "
                    "and what to change.");
-  py::register_exception_translator([](std::exception_ptr p) {
+  py::register_local_exception_translator([](std::exception_ptr p) {
     try {
       if (p) std::rethrow_exception(p);
     } catch (const InputError& e) {

@@ -1,5 +1,6 @@
 #pragma once
-// tetblend's typed errors as Python exceptions:
+// tetblend's typed errors as Python exceptions (shown here for the module
+// tetblend; tetblend_blend has the same classes):
 //   tetblend.Error(Exception)                 base of every tetblend error
 //   tetblend.InputError(Error, ValueError)    bad data: file, element, value
 //   tetblend.DomainError(Error, ValueError)   a mathematical precondition failed

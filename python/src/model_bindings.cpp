@@ -1,6 +1,6 @@
-// Model, prepare and load of the Python module. The GIL is released while a
-// model is prepared, loaded, saved or blended, so threads can blend one
-// model concurrently.
+// Model and load, shared by both Python modules (tetblend and the VTK-free
+// tetblend_blend). The GIL is released while a model is loaded, saved or
+// blended, so threads can blend one model concurrently.
 
 #include <pybind11/eigen.h>
 #include <pybind11/pybind11.h>
@@ -12,45 +12,11 @@
 #include "model.h"
 #include "numpy_arrays.h"
 #include "tetblend/pipeline/blended_shape.h"
-#include "tetblend/pipeline/prepare_model.h"
 
 namespace py = pybind11;
 
 namespace tetblend::python {
 namespace {
-
-std::shared_ptr<Model> prepare(py::handle restVertices, py::handle triangles,
-                               py::iterable exampleVertices, double quality,
-                               std::optional<double> maxVolume, bool tetrise, bool fillHoles,
-                               bool strict) {
-  SurfaceMesh rest;
-  rest.vertices = toVertices(restVertices, "rest_vertices");
-  rest.triangles = toIndices<3>(triangles, "triangles", rest.vertices.rows());
-  std::vector<SurfaceMesh> examples;
-  std::vector<std::string> names;
-  for (py::handle example : exampleVertices) {
-    names.push_back("example_vertices[" + std::to_string(examples.size()) + "]");
-    examples.push_back(SurfaceMesh{toVertices(example, names.back()), rest.triangles});
-  }
-  PrepareOptions options;
-  options.radiusEdgeRatio = quality;
-  options.maxVolume = maxVolume;
-  options.tetrise = tetrise;
-  options.fillHoles = fillHoles;
-  options.strict = strict;
-  std::vector<std::string> warnings;
-  PrepareMessages messages;
-  messages.warning = [&warnings](const std::string& line) { warnings.push_back(line); };
-  ModelData data;
-  {
-    py::gil_scoped_release release;
-    data = prepareModel(rest, examples, "rest_vertices", names, options, messages);
-  }
-  for (const std::string& line : warnings) {
-    if (PyErr_WarnEx(PyExc_UserWarning, line.c_str(), 1) != 0) throw py::error_already_set();
-  }
-  return std::make_shared<Model>(std::move(data));
-}
 
 py::array_t<int> intArray(const std::vector<int>& values) {
   return py::array_t<int>(static_cast<py::ssize_t>(values.size()), values.data());
@@ -76,8 +42,9 @@ constexpr const char* kBlendArguments =
 }  // namespace
 
 void bindModel(py::module_& m) {
+  // module_local: both modules register this class; each keeps its own.
   py::class_<Model, std::shared_ptr<Model>>(
-      m, "Model",
+      m, "Model", py::module_local(),
       "A prepared model: the rest tet mesh and the examples' compatible tet "
       "meshes (what\n'tetblend prepare' saves). Made by tetblend.prepare or "
       "tetblend.load.")
@@ -165,21 +132,6 @@ void bindModel(py::module_& m) {
                std::to_string(model.data().examples.size()) + " examples>";
       });
 
-  m.def("prepare", &prepare, py::arg("rest_vertices"), py::arg("triangles"),
-        py::arg("example_vertices"), py::kw_only(), py::arg("quality") = 2.0,
-        py::arg("max_volume") = py::none(), py::arg("tetrise") = false,
-        py::arg("fill_holes") = true, py::arg("strict") = false,
-        "Prepares a model from surfaces in memory, as 'tetblend prepare' does from files.\n\n"
-        "rest_vertices: (n, 3) real; triangles: (f, 3) integer, shared by every example;\n"
-        "example_vertices: a sequence of (n, 3) real arrays, one per example, same units.\n"
-        "quality: TetGen's radius-edge bound (> 1, or 0 for none; default 2). max_volume:\n"
-        "TetGen's volume bound in units cubed (default None: none). tetrise: one tet per\n"
-        "triangle instead of TetGen (no interior). fill_holes: close the holes of an open\n"
-        "rest with triangles between its boundary vertices before TetGen runs (default True;\n"
-        "Model.surface_triangles stays the input's); False refuses an open rest. strict:\n"
-        "refuse examples whose tets cannot all be embedded (default: exclude those tets,\n"
-        "with a UserWarning).\n"
-        "Raises InputError naming the array and the element at fault.");
   m.def(
       "load",
       [](const std::string& path) {

@@ -18,6 +18,7 @@ PYBIND11_MODULE(tetblend, m) {
   registerErrors(m);
   bindMeshIo(m);
   bindModel(m);
+  bindPrepare(m);
   bindVariations(m);
   bindDeform(m);
 }
