@@ -45,6 +45,7 @@
 #include <string>
 
 #include "tetblend/blending/shape_blender.h"
+#include "tetblend/core/constants.h"
 #include "tetblend/meshing/procedural_shapes.h"
 
 namespace tetblend {
@@ -113,12 +114,12 @@ Model& model(int n, BlendMethod method) {
     const TetMesh rest = boxTetMesh(n, n, nz, Eigen::Vector3d(1.0, 1.0, length));
     const Eigen::Vector3d base(0.0, 0.0, -length / 2);
     const Vertices twisted =
-        twistAboutAxis(rest.vertices, base, Eigen::Vector3d::UnitZ(), M_PI, length);
+        twistAboutAxis(rest.vertices, base, Eigen::Vector3d::UnitZ(), kPi, length);
     std::vector<Vertices> examples = {twisted};
     examples.push_back(bendAboutAxis(rest.vertices, base, Eigen::Vector3d::UnitZ(),
-                                     Eigen::Vector3d::UnitX(), M_PI / 2, length));
+                                     Eigen::Vector3d::UnitX(), kPi / 2, length));
     examples.push_back(bendAboutAxis(twisted, base, Eigen::Vector3d::UnitZ(),
-                                     Eigen::Vector3d::UnitY(), M_PI / 3, length));
+                                     Eigen::Vector3d::UnitY(), kPi / 3, length));
     ShapeBlenderOptions options;
     options.methods = {method, BlendMethod::kVertexLinear};
     const auto start = Clock::now();

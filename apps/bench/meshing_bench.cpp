@@ -36,6 +36,7 @@
 #include <string>
 #include <vector>
 
+#include "tetblend/core/constants.h"
 #include "tetblend/core/error.h"
 #include "tetblend/meshing/example_aware_tets.h"
 #include "tetblend/meshing/pose_corpus.h"
@@ -48,7 +49,6 @@
 namespace tetblend {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kLength = 6.0;         // bar is kLength × 1 × 1
 constexpr double kBarVolume = kLength;  // units³
 constexpr int kExampleCount = 3;

@@ -19,6 +19,7 @@
 #include <filesystem>
 #include <string>
 
+#include "tetblend/core/constants.h"
 #include "tetblend/meshing/procedural_shapes.h"
 #include "tetblend/meshing/surface_io.h"
 #include "tetblend/meshing/surface_validation.h"
@@ -26,9 +27,9 @@
 
 namespace {
 
+using tetblend::kPi;
 using tetblend::SurfaceMesh;
 using tetblend::Vertices;
-constexpr double kPi = 3.14159265358979323846;
 
 SurfaceMesh surfaceOf(const tetblend::TetMesh& mesh) {
   const SurfaceMesh boundary = tetblend::boundarySurface(mesh);

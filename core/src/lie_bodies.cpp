@@ -6,6 +6,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "tetblend/core/constants.h"
 #include "tetblend/core/error.h"
 #include "tetblend/core/shear_group.h"
 #include "tetblend/core/so3.h"
@@ -33,7 +34,7 @@ Vector6d twistWithRotation(const Eigen::Matrix4d& e, const Eigen::Vector3d& omeg
   const Eigen::Vector3d t = e.topRightCorner<3, 1>();
   Vector6d xi;
   xi.head<3>() = omega;
-  if (theta <= so3_detail::kPi) {
+  if (theta <= kPi) {
     xi.tail<3>() = se3LeftJacobianInverse(omega) * t;
     return xi;
   }

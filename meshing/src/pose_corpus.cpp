@@ -9,13 +9,13 @@
 #include <numeric>
 #include <random>
 
+#include "tetblend/core/constants.h"
 #include "tetblend/core/error.h"
 #include "tetblend/meshing/procedural_shapes.h"
 
 namespace tetblend {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kDegree = kPi / 180.0;
 // A bend keeps its arc radius this many times the half-thickness in the bend
 // direction, so the inner side is compressed but never turned inside out.

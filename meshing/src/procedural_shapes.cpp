@@ -7,13 +7,12 @@
 #include <utility>
 #include <vector>
 
+#include "tetblend/core/constants.h"
 #include "tetblend/core/error.h"
 #include "tetblend/core/tet_geometry.h"
 
 namespace tetblend {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 void requirePositiveCount(int value, const char* name, const char* function) {
   if (value < 1) {

@@ -7,12 +7,12 @@
 #include <string>
 
 #include "half_edge_table.h"
+#include "tetblend/core/constants.h"
 #include "tetblend/core/error.h"
 
 namespace tetblend {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 // |winding number| above this counts as inside: the exact value is 0 or 1 for
 // a point off a closed, consistently oriented surface.
 constexpr double kInsideWinding = 0.5;

@@ -4,12 +4,12 @@
 #include <nlohmann/json.hpp>
 
 #include "apps_test_support.h"
+#include "tetblend/core/constants.h"
 
 namespace tetblend::apps_test {
 namespace {
 
 using nlohmann::json;
-constexpr double kPi = 3.14159265358979323846;
 // Rigid maps of unit-size coordinates evaluated in closed form: ~10 ulps.
 constexpr double kRigidTolerance = 1e-12;
 

@@ -9,6 +9,7 @@
 
 #include "apps_test_support.h"
 #include "test_surfaces.h"
+#include "tetblend/core/constants.h"
 #include "tetblend/core/tet_geometry.h"
 #include "tetblend/meshing/procedural_shapes.h"
 
@@ -36,10 +37,10 @@ class OpenRest : public ::testing::Test {
     writeSurface(path("rest.obj"), rest);
     writeSurface(
         path("twist.obj"),
-        SurfaceMesh{twistAboutAxis(rest.vertices, origin, axis, EIGEN_PI, 4.0), rest.triangles});
+        SurfaceMesh{twistAboutAxis(rest.vertices, origin, axis, kPi, 4.0), rest.triangles});
     writeSurface(path("bend.obj"),
                  SurfaceMesh{bendAboutAxis(rest.vertices, origin, axis, Eigen::Vector3d::UnitX(),
-                                           0.5 * EIGEN_PI, 4.0),
+                                           0.5 * kPi, 4.0),
                              rest.triangles});
   }
   std::string path(const std::string& name) const { return (dir_ / name).string(); }

@@ -16,6 +16,7 @@
 #include "tetblend/blending/shape_blender.h"
 #include "tetblend/blending/stitch_solver.h"
 #include "tetblend/blending/tet_maps.h"
+#include "tetblend/core/constants.h"
 #include "tetblend/meshing/procedural_shapes.h"
 
 namespace tetblend {
@@ -91,7 +92,7 @@ void expectKeepTargetsOffGivesTheSameVertices(double twist, std::mt19937& rng) {
   ShapeBlenderOptions options;
   for (BlendMethod method : allBlendMethods()) {
     // alexa has no real logarithm of a tet turned past pi.
-    if (method == BlendMethod::kAlexa && twist > M_PI) continue;
+    if (method == BlendMethod::kAlexa && twist > kPi) continue;
     if (method != BlendMethod::kVertexLinear) options.methods.push_back(method);
   }
   ShapeBlenderOptions keep = options;
@@ -118,13 +119,13 @@ TEST(FusedStitch, KeepTargetsOffGivesTheSameVerticesForEveryMethod) {
   std::mt19937 rng(seed);
   {
     SCOPED_TRACE("twist 0.8 pi: no rotation-lift corrections");
-    expectKeepTargetsOffGivesTheSameVertices(0.8 * M_PI, rng);
+    expectKeepTargetsOffGivesTheSameVertices(0.8 * kPi, rng);
   }
   {
     // kaji and liebodies then store lift corrections for the first
     // example's far end only (the warp needs none).
     SCOPED_TRACE("twist 2.2 pi");
-    expectKeepTargetsOffGivesTheSameVertices(2.2 * M_PI, rng);
+    expectKeepTargetsOffGivesTheSameVertices(2.2 * kPi, rng);
   }
 }
 

@@ -13,6 +13,7 @@
 #include "tetblend/blending/tet_adjacency.h"
 #include "tetblend/blending/tet_maps.h"
 #include "tetblend/core/baselines.h"
+#include "tetblend/core/constants.h"
 #include "tetblend/core/error.h"
 #include "tetblend/meshing/procedural_shapes.h"
 
@@ -34,9 +35,9 @@ void expectPolarSlerpMatchesCore(int exampleCount, std::mt19937& rng) {
   const TetMesh rest = boxTetMesh(2, 2, 4, Eigen::Vector3d(1.0, 1.0, 2.0));
   const Eigen::Vector3d base(0.0, 0.0, -1.0);
   std::vector<Vertices> examples = {
-      twistAboutAxis(rest.vertices, base, Eigen::Vector3d::UnitZ(), 0.9 * M_PI, 2.0),
+      twistAboutAxis(rest.vertices, base, Eigen::Vector3d::UnitZ(), 0.9 * kPi, 2.0),
       bendAboutAxis(rest.vertices, base, Eigen::Vector3d::UnitZ(), Eigen::Vector3d::UnitX(),
-                    M_PI / 3.0, 2.0),
+                    kPi / 3.0, 2.0),
       testing::smoothWarp(rest.vertices, 0.1, rng)};
   examples.resize(exampleCount);
   ShapeBlenderOptions options;

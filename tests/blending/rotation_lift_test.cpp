@@ -14,12 +14,11 @@
 
 #include "blending_test_support.h"
 #include "tetblend/blending/rotation_consistency.h"
+#include "tetblend/core/constants.h"
 #include "tetblend/core/so3.h"
 
 namespace tetblend {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 // exp(base) exp(correction) against R: products and Rodrigues' formula on
 // vectors of length up to ~4.5 pi, each entry a few ulps of 1 per operation.

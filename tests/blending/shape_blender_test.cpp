@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "blending_test_support.h"
+#include "tetblend/core/constants.h"
 #include "tetblend/core/error.h"
 #include "tetblend/core/tet_geometry.h"
 #include "tetblend/meshing/procedural_shapes.h"
@@ -36,9 +37,9 @@ Fixture barFixture(std::mt19937& rng) {
   f.rest = boxTetMesh(2, 2, 6, Eigen::Vector3d(1.0, 1.0, 3.0));
   const Eigen::Vector3d base(0.0, 0.0, -1.5);
   f.examples.push_back(
-      twistAboutAxis(f.rest.vertices, base, Eigen::Vector3d::UnitZ(), 0.75 * M_PI, 3.0));
+      twistAboutAxis(f.rest.vertices, base, Eigen::Vector3d::UnitZ(), 0.75 * kPi, 3.0));
   f.examples.push_back(bendAboutAxis(f.rest.vertices, base, Eigen::Vector3d::UnitZ(),
-                                     Eigen::Vector3d::UnitX(), M_PI / 3.0, 3.0));
+                                     Eigen::Vector3d::UnitX(), kPi / 3.0, 3.0));
   f.examples.push_back(testing::smoothWarp(f.rest.vertices, 0.1, rng).rowwise() +
                        Eigen::RowVector3d(0.3, -0.2, 1.0));
   return f;
@@ -171,7 +172,7 @@ TEST(ShapeBlender, LieBodiesVolumeChangesMonotonicallyBetweenTwoShapes) {
   grown.col(2) *= 1.3;
   const Vertices example =
       bendAboutAxis(grown, Eigen::Vector3d(0.0, 0.0, -1.95), Eigen::Vector3d::UnitZ(),
-                    Eigen::Vector3d::UnitY(), M_PI / 2, 3.9);
+                    Eigen::Vector3d::UnitY(), kPi / 2, 3.9);
   ShapeBlenderOptions options;
   options.methods = {BlendMethod::kLieBodies};
   const ShapeBlender blender(rest, {example}, options);

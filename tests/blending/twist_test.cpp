@@ -14,6 +14,7 @@
 #include "tetblend/blending/quality.h"
 #include "tetblend/blending/shape_blender.h"
 #include "tetblend/blending/tet_maps.h"
+#include "tetblend/core/constants.h"
 #include "tetblend/core/tet_geometry.h"
 #include "tetblend/meshing/procedural_shapes.h"
 #include "tetblend/meshing/tet_boundary.h"
@@ -40,7 +41,7 @@ double twistAngle(const Vertices& x) {
   for (int k = 0; k <= kLayers; ++k) {
     const Eigen::RowVector3d edge = x.row(vertexIndex(kCells, 0, k)) - x.row(vertexIndex(0, 0, k));
     const double angle = std::atan2(edge.y(), edge.x());
-    if (k > 0) total += std::remainder(angle - previous, 2.0 * M_PI);
+    if (k > 0) total += std::remainder(angle - previous, 2.0 * kPi);
     previous = angle;
   }
   return total;
@@ -50,7 +51,7 @@ struct TwistedBar {
   TetMesh rest = boxTetMesh(kCells, kCells, kLayers, Eigen::Vector3d(kWidth, kWidth, kLength));
   std::vector<Vertices> examples = {twistAboutAxis(rest.vertices,
                                                    Eigen::Vector3d(0.0, 0.0, -kLength / 2),
-                                                   Eigen::Vector3d::UnitZ(), 4.0 * M_PI, kLength)};
+                                                   Eigen::Vector3d::UnitZ(), 4.0 * kPi, kLength)};
 };
 
 int invertedTets(const TetMesh& rest, const Vertices& result) {
@@ -83,7 +84,7 @@ class Twist : public ::testing::TestWithParam<BlendMethod> {};
 TEST(TwistExample, MeasuresFourPi) {
   const TwistedBar bar;
   EXPECT_NEAR(twistAngle(bar.rest.vertices), 0.0, 1e-12);
-  EXPECT_NEAR(twistAngle(bar.examples[0]), 4.0 * M_PI, 1e-9);
+  EXPECT_NEAR(twistAngle(bar.examples[0]), 4.0 * kPi, 1e-9);
 }
 
 TEST_P(Twist, FourPiBlendsIntoTwoPiAndPi) {
@@ -95,8 +96,8 @@ TEST_P(Twist, FourPiBlendsIntoTwoPiAndPi) {
   const double quarter = twistAngle(blender.blend({0.25}).vertices);
   std::cout << blendMethodName(GetParam()) << ": twist at 0.5 " << half << ", at 0.25 " << quarter
             << "\n";
-  EXPECT_NEAR(half, 2.0 * M_PI, twistTolerance(GetParam()));
-  EXPECT_NEAR(quarter, M_PI, twistTolerance(GetParam()));
+  EXPECT_NEAR(half, 2.0 * kPi, twistTolerance(GetParam()));
+  EXPECT_NEAR(quarter, kPi, twistTolerance(GetParam()));
 }
 
 TEST_P(Twist, NoInvertedTetsAtHalfWeight) {
@@ -118,7 +119,7 @@ TEST_P(Twist, UnitWeightReproducesTheExample) {
   const Vertices result = blender.blend({1.0}).vertices;
   const double error = (result - bar.examples[0]).rowwise().norm().maxCoeff();
   EXPECT_LE(error, kReproductionTolerance * boundingBoxDiagonal(bar.examples[0]));
-  EXPECT_NEAR(twistAngle(result), 4.0 * M_PI, 1e-9);
+  EXPECT_NEAR(twistAngle(result), 4.0 * kPi, 1e-9);
 }
 
 TEST_P(Twist, PrincipalLogarithmsLoseTheTurns) {
@@ -129,7 +130,7 @@ TEST_P(Twist, PrincipalLogarithmsLoseTheTurns) {
   options.methods = {GetParam()};
   options.rotationConsistency = false;
   const ShapeBlender blender(bar.rest, bar.examples, options);
-  EXPECT_LT(std::abs(twistAngle(blender.blend({0.5}).vertices)), M_PI);
+  EXPECT_LT(std::abs(twistAngle(blender.blend({0.5}).vertices)), kPi);
 }
 
 // The same bar as a tetrised surface (one tet per boundary triangle, no
@@ -155,13 +156,13 @@ TEST_P(Twist, TetrisedSurfaceKeepsTheTurns) {
   const Vertices half = blender.blend({0.5}).vertices;
   std::cout << blendMethodName(GetParam()) << " (tetrised): twist at 0.5 " << twistAngle(half)
             << ", inverted tets " << invertedTets(bar.rest, half) << "\n";
-  EXPECT_NEAR(twistAngle(half), 2.0 * M_PI, twistTolerance(GetParam()));
+  EXPECT_NEAR(twistAngle(half), 2.0 * kPi, twistTolerance(GetParam()));
   EXPECT_EQ(invertedTets(bar.rest, half), 0);
   // With principal logarithms the half twist is lost (measured: 4π for
   // kaji, whose unlinked tets make the stitched surface wind back and forth).
   options.rotationConsistency = false;
   const ShapeBlender principal(bar.rest, bar.examples, options);
-  EXPECT_GT(std::abs(twistAngle(principal.blend({0.5}).vertices) - 2.0 * M_PI), 1.0);
+  EXPECT_GT(std::abs(twistAngle(principal.blend({0.5}).vertices) - 2.0 * kPi), 1.0);
 }
 
 INSTANTIATE_TEST_SUITE_P(Methods, Twist,

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "rigid_test_support.h"
+#include "tetblend/core/constants.h"
 #include "tetblend/core/error.h"
 #include "tetblend/core/so3.h"
 
@@ -22,7 +23,6 @@ using core_test::spdWithEigenvalues;
 using core_test::testSeed;
 using core_test::uniform;
 
-constexpr double kPi = 3.14159265358979323846;
 // Polar decompositions, quaternion conversions and Eigen's matrix exp/log of
 // unit-scale maps: round-off of a few hundred ulps at most.
 constexpr double kTol = 1e-11;

@@ -14,6 +14,7 @@
 
 #include "core_test_support.h"
 #include "test_seed.h"
+#include "tetblend/core/constants.h"
 #include "tetblend/core/error.h"
 #include "tetblend/core/lane_math.h"
 #include "tetblend/core/polar.h"
@@ -75,7 +76,7 @@ TEST(BatchKernels, So3ExpMatchesScalar) {
   // Zero, tiny angles, both sides of the Taylor switch kSmallAngle, pi, turns
   // beyond 2 pi, both sides of the lanes' sin/cos range (the scalar kernel
   // takes over above it) and a huge angle.
-  for (double theta : {0.0, 1e-12, 0.5 * small, 2.0 * small, 1.0, M_PI, 7.0, 40.0,
+  for (double theta : {0.0, 1e-12, 0.5 * small, 2.0 * small, 1.0, kPi, 7.0, 40.0,
                        0.999 * laneMax, 1.001 * laneMax, 1e155}) {
     in.push_back(theta * axis);
   }
@@ -98,14 +99,14 @@ TEST(BatchKernels, So3LogMatchesScalar) {
   std::vector<Eigen::Matrix3d> in;
   // Identity, tiny angles, both sides of kSmallAngle and of the axis switch at
   // theta = pi/2 (cos = 0), pi - 1e-9, and exactly pi about coordinate axes.
-  for (double theta : {0.0, 1e-12, 0.5 * small, 2.0 * small, 1.0, 0.5 * M_PI - 1e-9,
-                       0.5 * M_PI + 1e-9, 3.0, M_PI - 1e-9, M_PI}) {
+  for (double theta : {0.0, 1e-12, 0.5 * small, 2.0 * small, 1.0, 0.5 * kPi - 1e-9,
+                       0.5 * kPi + 1e-9, 3.0, kPi - 1e-9, kPi}) {
     in.push_back(so3Exp(theta * axis));
   }
   in.push_back(Eigen::Vector3d(1.0, -1.0, -1.0).asDiagonal());
   in.push_back(Eigen::Vector3d(-1.0, 1.0, -1.0).asDiagonal());
   in.push_back(Eigen::Vector3d(-1.0, -1.0, 1.0).asDiagonal());
-  for (int i = 0; i < kRandomCount; ++i) in.push_back(randomRotation(rng, M_PI));
+  for (int i = 0; i < kRandomCount; ++i) in.push_back(randomRotation(rng, kPi));
   std::vector<Eigen::Vector3d> out(in.size());
   so3LogBatch(in.data(), out.data(), in.size());
   for (std::size_t i = 0; i < in.size(); ++i) {
@@ -165,7 +166,7 @@ std::vector<AffineParams> phiInputs(std::mt19937& rng) {
   std::vector<AffineParams> in;
   // Rotation angles on both sides of kSmallAngle, through pi and past 2 pi
   // (20-30 rad), and beyond the lanes' sin/cos range (scalar path).
-  for (double theta : {0.0, 0.5 * small, 2.0 * small, M_PI, 2.0 * M_PI, 20.0, 30.0, 3e5}) {
+  for (double theta : {0.0, 0.5 * small, 2.0 * small, kPi, 2.0 * kPi, 20.0, 30.0, 3e5}) {
     in.push_back({Eigen::Vector3d(1.0, 2.0, 3.0), theta * axis, randomSymmetric(rng, 1.0)});
   }
   in.push_back(
@@ -173,7 +174,7 @@ std::vector<AffineParams> phiInputs(std::mt19937& rng) {
   for (int i = 0; i < kRandomCount; ++i) {
     const Eigen::Vector3d t(test_seed::uniform(rng, -1, 1), test_seed::uniform(rng, -1, 1),
                             test_seed::uniform(rng, -1, 1));
-    in.push_back({t, so3Log(randomRotation(rng, M_PI)), randomSymmetric(rng, 1.0)});
+    in.push_back({t, so3Log(randomRotation(rng, kPi)), randomSymmetric(rng, 1.0)});
   }
   return in;
 }
@@ -224,10 +225,10 @@ Eigen::Matrix4d affine(const Eigen::Matrix3d& linear) {
 std::vector<Eigen::Matrix4d> psiInputs(std::mt19937& rng) {
   const double maxCond = polar_detail::kClosedFormMaxCond;
   std::vector<Eigen::Matrix4d> in = {Eigen::Matrix4d::Identity(),
-                                     affine(2.0 * randomRotation(rng, M_PI))};
+                                     affine(2.0 * randomRotation(rng, kPi))};
   // Coincident and near-coincident singular values, a rotation by pi, cond(A)
   // on both sides of the closed-form limit (above: Newton in the scalar psi).
-  const Eigen::Matrix3d r = randomRotation(rng, M_PI);
+  const Eigen::Matrix3d r = randomRotation(rng, kPi);
   for (const Eigen::Vector3d& sigma :
        {Eigen::Vector3d(2.0, 2.0, 1.0), Eigen::Vector3d(1.0, 1.0 + 1e-9, 1.0 - 1e-9),
         Eigen::Vector3d(0.9 * maxCond, 1.0, 1.0), Eigen::Vector3d(1.1 * maxCond, 1.0, 1.0),
@@ -235,10 +236,10 @@ std::vector<Eigen::Matrix4d> psiInputs(std::mt19937& rng) {
     in.push_back(affine(r * withEigenvalues(rng, sigma)));
   }
   in.push_back(affine(Eigen::Vector3d(1.0, -1.0, -1.0).asDiagonal()));
-  in.push_back(affine(so3Exp((M_PI - 1e-9) * Eigen::Vector3d(0.6, 0.8, 0.0)) *
+  in.push_back(affine(so3Exp((kPi - 1e-9) * Eigen::Vector3d(0.6, 0.8, 0.0)) *
                       withEigenvalues(rng, Eigen::Vector3d(3.0, 1.0, 0.5))));
   for (int i = 0; i < kRandomCount; ++i) {
-    in.push_back(affine(randomRotation(rng, M_PI) * symExp(randomSymmetric(rng, 1.0))));
+    in.push_back(affine(randomRotation(rng, kPi) * symExp(randomSymmetric(rng, 1.0))));
   }
   return in;
 }
@@ -320,7 +321,7 @@ TEST(BatchKernels, ExtremeSpreadsAndScalesMatchScalar) {
   for (int j = -300; j <= 300; j += 25) {
     const double c = std::pow(10.0, j);
     linear.push_back(c * withEigenvalues(rng, Eigen::Vector3d(3.0, 1.0, 1.0)));
-    linear.push_back(c * randomRotation(rng, M_PI) * withEigenvalues(rng, Eigen::Vector3d(2, 1, 0.1)));
+    linear.push_back(c * randomRotation(rng, kPi) * withEigenvalues(rng, Eigen::Vector3d(2, 1, 0.1)));
     stretch.push_back(c * withEigenvalues(rng, Eigen::Vector3d(3.0, 1.0, 0.5)));
   }
   linear.push_back(Eigen::Vector3d(1.0, 1.0, 1e-310).asDiagonal());

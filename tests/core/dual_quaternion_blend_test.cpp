@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "rigid_test_support.h"
+#include "tetblend/core/constants.h"
 #include "tetblend/core/error.h"
 #include "tetblend/core/se3.h"
 
@@ -23,7 +24,6 @@ using core_test::rotationAngle;
 using core_test::testSeed;
 using core_test::uniform;
 
-constexpr double kPi = 3.14159265358979323846;
 // Compositions, exp/log chains of unit-scale motions: round-off only.
 constexpr double kTol = 1e-12;
 // Kavan §4: DLB and ScLERP rotation angles differ by less than 8.15 degrees.

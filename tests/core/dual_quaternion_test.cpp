@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "rigid_test_support.h"
+#include "tetblend/core/constants.h"
 #include "tetblend/core/error.h"
 #include "tetblend/core/se3.h"
 
@@ -20,7 +21,6 @@ using core_test::rigidFromAngleAxis;
 using core_test::testSeed;
 using core_test::uniform;
 
-constexpr double kPi = 3.14159265358979323846;
 // Round trips and compositions of unit-scale motions: a few ulps.
 constexpr double kRoundTripTol = 1e-14;
 // Against Eigen's Pade/Schur-Parlett exp/log of the 4x4 matrix.

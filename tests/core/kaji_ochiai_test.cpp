@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core_test_support.h"
+#include "tetblend/core/constants.h"
 #include "tetblend/core/error.h"
 #include "tetblend/core/so3.h"
 #include "tetblend/core/sym3.h"
@@ -22,7 +23,6 @@ using core_test::relativeError;
 using core_test::testSeed;
 using core_test::uniform;
 
-constexpr double kPi = 3.14159265358979323846;
 // phi(psi(A)) = A, relative Frobenius error of the linear part, by cond(A):
 // the required accuracy bands of the design (a few ulps times cond, capped).
 constexpr double kRoundTripTolCond1e2 = 1e-13;

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "test_seed.h"
+#include "tetblend/core/constants.h"
 
 namespace tetblend {
 namespace {
@@ -124,7 +125,7 @@ TEST(LaneMath, LogAndLog1pMatchLibm) {
 
 TEST(LaneMath, Atan2MatchesLibmInAllOctants) {
   std::mt19937 rng(seed("Atan2MatchesLibmInAllOctants"));
-  const double t8 = std::tan(M_PI / 8);
+  const double t8 = std::tan(kPi / 8);
   // Axes, diagonals, both sides of the tan(pi/8) switch and of |y| = |x|.
   std::vector<std::pair<double, double>> cases = {{0.0, 1.0},
                                                   {1.0, 0.0},
@@ -159,9 +160,9 @@ TEST(LaneMath, SinCosMatchLibm) {
   // reduction, so the comparison there is absolute (kMaxAbsNearZero).
   std::vector<double> xs = {0.0, 1e-300, 1e-8, kSinCosMaxArg};
   for (int k = 1; k < 16; ++k) {
-    xs.push_back(k * M_PI / 4);
-    xs.push_back(std::nextafter(k * M_PI / 4, 0.0));
-    xs.push_back(std::nextafter(k * M_PI / 4, 100.0));
+    xs.push_back(k * kPi / 4);
+    xs.push_back(std::nextafter(k * kPi / 4, 0.0));
+    xs.push_back(std::nextafter(k * kPi / 4, 100.0));
   }
   for (int i = 0; i < kSamples; ++i) {
     xs.push_back(test_seed::uniform(rng, 0.0, 4.0));

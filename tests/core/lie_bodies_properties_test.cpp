@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "lie_test_support.h"
+#include "tetblend/core/constants.h"
 #include "tetblend/core/lie_bodies.h"
 
 namespace tetblend {
@@ -24,7 +25,6 @@ using lie_test::randomTet;
 using lie_test::testSeed;
 using lie_test::uniform;
 
-constexpr double kPi = 3.14159265358979323846;
 // Closed forms against MatrixFunctions, relative to the norms involved.
 constexpr double kOracleTol = 1e-12;
 // Identities that hold exactly in the paper (det, orthonormality, equal

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "lie_test_support.h"
+#include "tetblend/core/constants.h"
 #include "tetblend/core/lie_bodies.h"
 
 namespace tetblend {
@@ -19,7 +20,6 @@ using lie_test::randomTet;
 using lie_test::testSeed;
 using lie_test::uniform;
 
-constexpr double kPi = 3.14159265358979323846;
 // Blends of unit-scale tets against closed forms (AngleAxis rotations, the
 // geodesic): a few hundred roundings, relative to the corner magnitude.
 constexpr double kBlendTol = 1e-12;

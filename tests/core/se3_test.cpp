@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core_test_support.h"
+#include "tetblend/core/constants.h"
 #include "tetblend/core/error.h"
 
 namespace tetblend {
@@ -19,7 +20,6 @@ using core_test::randomUnitVector;
 using core_test::testSeed;
 using core_test::uniform;
 
-constexpr double kPi = 3.14159265358979323846;
 // Closed form vs Eigen's Pade/Schur-Parlett exp/log on unit-scale twists: a
 // few hundred ulps of accumulated round-off in the oracle itself.
 constexpr double kOracleTol = 1e-12;

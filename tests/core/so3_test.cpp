@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core_test_support.h"
+#include "tetblend/core/constants.h"
 #include "tetblend/core/error.h"
 
 namespace tetblend {
@@ -17,7 +18,6 @@ using core_test::randomUnitVector;
 using core_test::testSeed;
 using core_test::uniform;
 
-constexpr double kPi = 3.14159265358979323846;
 // Unit-scale round trips: a few ulps of accumulated round-off, times the angle
 // for the oracle comparisons (scaling and squaring loses ~eps per squaring).
 constexpr double kRoundTripTol = 2e-15;

@@ -13,6 +13,7 @@
 #include <Eigen/LU>
 #include <Eigen/SVD>
 
+#include "tetblend/core/constants.h"
 #include "tetblend/core/error.h"
 #include "tetblend/core/tet_geometry.h"
 #include "tetblend/meshing/procedural_shapes.h"
@@ -21,7 +22,6 @@
 namespace tetblend {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 // Affine reproduction: one sparse Cholesky solve plus ARAP iterations that
 // must stay at the affine fixed point; 1e-9 of the bbox diagonal leaves room
 // for cond(K) ~ 1e4 on these meshes times ε.

@@ -10,6 +10,7 @@
 #include <array>
 #include <vector>
 
+#include "tetblend/core/constants.h"
 #include "tetblend/core/tet_geometry.h"
 #include "tetblend/meshing/procedural_shapes.h"
 #include "tetblend/meshing/self_intersection.h"
@@ -20,7 +21,6 @@
 namespace tetblend {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 // Volumes of the refined and the original mesh agree to round-off: each split
 // halves tets exactly up to one rounding of the midpoint per split.
 constexpr double kVolumeRelTol = 1e-12;

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "test_surfaces.h"
+#include "tetblend/core/constants.h"
 #include "tetblend/core/error.h"
 #include "tetblend/meshing/surface_orientation.h"
 #include "tetblend/meshing/surface_validation.h"
@@ -94,7 +95,7 @@ TEST(HoleFilling, ThreeHolesOfARoundedStackCloseWithoutNewVertices) {
   const int n = 32;
   std::vector<double> radii, heights;
   for (int k = 0; k < 9; ++k) {
-    const double latitude = (-80.0 + 20.0 * k) * EIGEN_PI / 180.0;
+    const double latitude = (-80.0 + 20.0 * k) * kPi / 180.0;
     radii.push_back(std::cos(latitude));
     heights.push_back(std::sin(latitude));
   }
@@ -155,7 +156,7 @@ TEST(HoleFilling, LargeHolesFillInSeconds) {
   const int n = 1500;
   RingStack wiggly = ringStack(n, {1.0, 1.0}, {0.0, 1.0});
   for (int i = 0; i < wiggly.mesh.vertices.rows(); ++i) {
-    const double angle = 2.0 * EIGEN_PI * (i % n) / n;
+    const double angle = 2.0 * kPi * (i % n) / n;
     wiggly.mesh.vertices(i, 2) += 0.05 * std::sin(37.0 * angle) + 0.03 * std::sin(101.0 * angle);
   }
   const std::vector<std::pair<std::string, RingStack>> cases = {

@@ -11,6 +11,7 @@
 #include <random>
 #include <string>
 
+#include "tetblend/core/constants.h"
 #include "tetblend/core/error.h"
 #include "tetblend/core/tet_geometry.h"
 #include "tetblend/meshing/tet_boundary.h"
@@ -18,7 +19,6 @@
 namespace tetblend {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 // Volumes and positions are sums of O(#T) unit-scale products: 1e-12 relative
 // is ~1e4 ε, generous for meshes of a few thousand tets.
 constexpr double kRelativeTolerance = 1e-12;

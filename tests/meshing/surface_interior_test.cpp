@@ -13,6 +13,7 @@
 #include <random>
 #include <vector>
 
+#include "tetblend/core/constants.h"
 #include "tetblend/meshing/procedural_shapes.h"
 #include "tetblend/meshing/self_intersection.h"
 #include "tetblend/meshing/tet_boundary.h"
@@ -21,7 +22,6 @@
 namespace tetblend {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 // Winding numbers of closed surfaces are integers away from the surface; a
 // sample counts as inside above 0.9 and outside below 0.1. Between the two
 // it lies within round-off of a face, and the pair is not judged.

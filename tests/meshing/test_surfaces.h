@@ -16,6 +16,7 @@
 #include <utility>
 #include <vector>
 
+#include "tetblend/core/constants.h"
 #include "tetblend/core/mesh_types.h"
 
 namespace tetblend {
@@ -42,7 +43,7 @@ inline RingStack ringStack(int n, const std::vector<double>& radii,
   stack.mesh.vertices.resize(rings * n, 3);
   for (int k = 0; k < rings; ++k) {
     for (int i = 0; i < n; ++i) {
-      const double angle = 2.0 * EIGEN_PI * i / n;
+      const double angle = 2.0 * kPi * i / n;
       stack.mesh.vertices.row(k * n + i) << radii[k] * std::cos(angle), radii[k] * std::sin(angle),
           heights[k] + saddle * std::sin(2.0 * angle);
     }
@@ -65,8 +66,8 @@ inline double frustaVolume(int n, const std::vector<double>& radii,
                            const std::vector<double>& heights) {
   double volume = 0.0;
   for (std::size_t k = 0; k + 1 < radii.size(); ++k) {
-    const double a1 = 0.5 * n * radii[k] * radii[k] * std::sin(2.0 * EIGEN_PI / n);
-    const double a2 = 0.5 * n * radii[k + 1] * radii[k + 1] * std::sin(2.0 * EIGEN_PI / n);
+    const double a1 = 0.5 * n * radii[k] * radii[k] * std::sin(2.0 * kPi / n);
+    const double a2 = 0.5 * n * radii[k + 1] * radii[k + 1] * std::sin(2.0 * kPi / n);
     volume += (heights[k + 1] - heights[k]) / 3.0 * (a1 + a2 + std::sqrt(a1 * a2));
   }
   return volume;

@@ -6,6 +6,7 @@
 
 #include <cmath>
 
+#include "tetblend/core/constants.h"
 #include "tetblend/core/dual_quaternion_blend.h"
 #include "tetblend/core/kaji_ochiai.h"
 
@@ -30,8 +31,8 @@ Handle turnAboutZ(const std::string& name, double angle) {
 // by about 168 degrees, between the two heavy handles.
 TEST(HandleDeformer, DqsIsCoreDlbWithTheHeaviestHandleAsSignReference) {
   const std::vector<Handle> handles = {turnAboutZ("still", 0.0),
-                                       turnAboutZ("left", 170.0 * EIGEN_PI / 180.0),
-                                       turnAboutZ("right", -170.0 * EIGEN_PI / 180.0)};
+                                       turnAboutZ("left", 170.0 * kPi / 180.0),
+                                       turnAboutZ("right", -170.0 * kPi / 180.0)};
   Vertices point(1, 3);
   point << 1.0, 0.0, 0.0;
   Eigen::MatrixXd weights(1, 3);
@@ -43,7 +44,7 @@ TEST(HandleDeformer, DqsIsCoreDlbWithTheHeaviestHandleAsSignReference) {
   const Eigen::Vector3d expected = dlb(dqs, {0.1, 0.45, 0.45}).transformPoint(point.row(0));
   EXPECT_LT((moved.row(0).transpose() - expected).norm(), kTolerance);
   const double angle = std::atan2(moved(0, 1), moved(0, 0));
-  EXPECT_GT(std::abs(angle), 160.0 * EIGEN_PI / 180.0) << "turned by " << angle << " rad";
+  EXPECT_GT(std::abs(angle), 160.0 * kPi / 180.0) << "turned by " << angle << " rad";
 }
 
 }  // namespace

@@ -10,6 +10,8 @@
 
 #include <cmath>
 
+#include "tetblend/core/constants.h"
+
 namespace tetblend {
 
 namespace so3_detail {
@@ -26,8 +28,6 @@ inline const double kSmallAngle = std::sqrt(std::sqrt(2.220446049250313e-16));
 /// whose direction loses accuracy as sin(theta) -> 0. For cos(theta) < 0 the
 /// symmetric form has 1 - cos(theta) > 1, so it is accurate to a few ulps.
 constexpr double kAxisFromSymmetricCos = 0.0;
-
-constexpr double kPi = 3.14159265358979323846;
 
 /// Largest |omega|^2 for Rodrigues' formula in terms of omega itself: b x y
 /// with b = (1 - cos t)/t^2 stays normal and t^2 finite below 2^1000 (t <
@@ -161,7 +161,7 @@ Eigen::Vector3d so3LogChecked(const Eigen::Matrix3d& r,
 /// the logarithms are the spheres |omega| = 2 pi k and the closest point on the
 /// nearest sphere along `reference` is returned.
 inline Eigen::Vector3d so3LogClosest(const Eigen::Matrix3d& r, const Eigen::Vector3d& reference) {
-  constexpr double kTwoPi = 2.0 * so3_detail::kPi;
+  constexpr double kTwoPi = 2.0 * kPi;
   const Eigen::Vector3d principal = so3Log(r);
   const double theta = principal.norm();
   if (theta == 0.0) {
