@@ -10,20 +10,13 @@
 #include <string>
 
 #include "tetblend/core/mesh_types.h"
+#include "test_seed.h"
 
 namespace tetblend::testing {
 
 /// Seed of the random tests: TETBLEND_SEED if set, else a fixed default.
 /// Printed with the running test's name, so a failure can be replayed.
-inline unsigned testSeed() {
-  constexpr unsigned kDefaultSeed = 20240611u;
-  const char* env = std::getenv("TETBLEND_SEED");
-  const unsigned seed = env != nullptr ? static_cast<unsigned>(std::stoul(env)) : kDefaultSeed;
-  const ::testing::TestInfo* test = ::testing::UnitTest::GetInstance()->current_test_info();
-  std::cout << "[ seed     ] " << (test != nullptr ? test->name() : "")
-            << ": TETBLEND_SEED=" << seed << "\n";
-  return seed;
-}
+inline unsigned testSeed() { return test_seed::seedOfCurrentTest(20240611u); }
 
 /// A smooth non-affine deformation of `v` with amplitude `amplitude` (units
 /// of v): small enough on a unit-scale mesh to keep every tet positive.

@@ -13,6 +13,7 @@
 #include <Eigen/LU>
 #include <Eigen/SVD>
 
+#include "test_seed.h"
 #include "tetblend/core/constants.h"
 #include "tetblend/core/error.h"
 #include "tetblend/core/tet_geometry.h"
@@ -27,12 +28,7 @@ namespace {
 // for cond(K) ~ 1e4 on these meshes times ε.
 constexpr double kAffineRelativeTolerance = 1e-9;
 
-unsigned testSeed() {
-  const char* env = std::getenv("TETBLEND_SEED");
-  const unsigned seed = env ? static_cast<unsigned>(std::stoul(env)) : 20240611u;
-  std::cout << "[ seed ] TETBLEND_SEED=" << seed << "\n";
-  return seed;
-}
+unsigned testSeed() { return test_seed::seedOfCurrentTest(20240611u); }
 
 // Independent inversion count: signed volumes straight from tet_geometry.
 int countInverted(const Vertices& vertices, const Tets& tets) {

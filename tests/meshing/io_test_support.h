@@ -17,6 +17,7 @@
 #include <string>
 
 #include "tetblend/core/mesh_types.h"
+#include "test_seed.h"
 
 namespace tetblend::io_test {
 
@@ -25,11 +26,7 @@ namespace fs = std::filesystem;
 /// Seed of the random tests: TETBLEND_SEED if set, else a fixed default;
 /// printed so a failure can be replayed.
 inline std::uint32_t testSeed(const std::string& testName) {
-  const char* env = std::getenv("TETBLEND_SEED");
-  const std::uint32_t seed =
-      env != nullptr ? static_cast<std::uint32_t>(std::stoul(env)) : 20240611u;
-  std::cout << "[ seed     ] " << testName << ": TETBLEND_SEED=" << seed << "\n";
-  return seed;
+  return test_seed::seedFor(testName.c_str(), 20240611u);
 }
 
 /// A fresh directory under the system temp directory, removed on destruction.

@@ -11,6 +11,7 @@
 #include <random>
 #include <string>
 
+#include "test_seed.h"
 #include "tetblend/core/constants.h"
 #include "tetblend/core/error.h"
 #include "tetblend/core/tet_geometry.h"
@@ -23,12 +24,7 @@ namespace {
 // is ~1e4 ε, generous for meshes of a few thousand tets.
 constexpr double kRelativeTolerance = 1e-12;
 
-unsigned testSeed() {
-  const char* env = std::getenv("TETBLEND_SEED");
-  const unsigned seed = env ? static_cast<unsigned>(std::stoul(env)) : 20240611u;
-  std::cout << "[ seed ] TETBLEND_SEED=" << seed << "\n";
-  return seed;
-}
+unsigned testSeed() { return test_seed::seedOfCurrentTest(20240611u); }
 
 double totalVolume(const TetMesh& mesh) {
   double volume = 0.0;

@@ -18,6 +18,7 @@
 
 #include "tetblend/core/constants.h"
 #include "tetblend/core/mesh_types.h"
+#include "test_seed.h"
 
 namespace tetblend {
 namespace testing_surfaces {
@@ -155,12 +156,7 @@ inline SurfaceMesh randomStarShape(std::mt19937_64& rng) {
 
 /// Seed of the randomised tests: TETBLEND_SEED if set, else a fixed default.
 /// Printed so that a failure can be reproduced.
-inline std::uint64_t testSeed() {
-  const char* env = std::getenv("TETBLEND_SEED");
-  const std::uint64_t seed = env != nullptr ? std::strtoull(env, nullptr, 10) : 20240521u;
-  std::cout << "[ seed     ] TETBLEND_SEED=" << seed << "\n";
-  return seed;
-}
+inline std::uint64_t testSeed() { return test_seed::seedOfCurrentTest(20240521u); }
 
 }  // namespace testing_surfaces
 }  // namespace tetblend

@@ -1,6 +1,8 @@
 #pragma once
-// The one seed helper of the core tests: the printed, overridable random seed
-// and a uniform draw. Each test support header fixes its own default seed.
+// The one seed helper of every test suite: the printed, overridable random
+// seed and a uniform draw. Each suite's support header fixes its default.
+
+#include <gtest/gtest.h>
 
 #include <cstdlib>
 #include <iostream>
@@ -16,6 +18,12 @@ inline unsigned seedFor(const char* testName, unsigned defaultSeed) {
   const unsigned seed = env ? static_cast<unsigned>(std::stoul(env)) : defaultSeed;
   std::cout << "[ seed     ] " << testName << ": TETBLEND_SEED=" << seed << "\n";
   return seed;
+}
+
+/// seedFor with the name of the running GoogleTest test.
+inline unsigned seedOfCurrentTest(unsigned defaultSeed) {
+  const ::testing::TestInfo* test = ::testing::UnitTest::GetInstance()->current_test_info();
+  return seedFor(test != nullptr ? test->name() : "", defaultSeed);
 }
 
 /// Uniform draw in [lo, hi).
