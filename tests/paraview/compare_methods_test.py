@@ -2,7 +2,7 @@
 each showing its blend (or, for a method that fails on these examples,
 nothing below its title).
 
-Run by ctest through tools/run_pvpython.py (pvpython under xvfb-run)."""
+Run by ctest through tools/run_pvpython.py (pvpython on its own Xvfb server)."""
 
 import importlib.util
 import os

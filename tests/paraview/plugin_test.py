@@ -3,7 +3,7 @@ loaded with LoadPlugin, it outputs what tetblend_blend computes in the same
 process and what 'tetblend blend' writes, bit for bit, for the weights, the
 method drop-down and the consistency switch; its output renders.
 
-Run by ctest through tools/run_pvpython.py (pvpython under xvfb-run)."""
+Run by ctest through tools/run_pvpython.py (pvpython on its own Xvfb server)."""
 
 import os
 
