@@ -12,6 +12,8 @@
 #include <filesystem>
 #include <iostream>
 #include <map>
+#include <optional>
+#include <string>
 #include <utility>
 
 #include "cgal_meshes.h"
@@ -109,6 +111,23 @@ TEST_P(PoseCorpus, EveryCleanPoseEmbedsWithoutInvertedTets) {
   }
 }
 
+// CGAL's cactus (thin arms), extracted into a folder named by `tag` and
+// read; nothing when Debian's libcgal-demo is missing (a failed extraction
+// is a test failure).
+std::optional<SurfaceMesh> cactusSurface(const std::string& tag) {
+  const std::string tarball = testing_cgal::cgalDataTarball();
+  if (tarball.empty()) return std::nullopt;
+  const std::filesystem::path meshes =
+      testing_cgal::extractCgalMeshes(tarball, {"cactus.off"}, tag);
+  if (meshes.empty()) {
+    ADD_FAILURE() << "cannot extract cactus.off from " << tarball;
+    return std::nullopt;
+  }
+  SurfaceMesh surface = readSurface((meshes / "cactus.off").string());
+  std::filesystem::remove_all(meshes.parent_path().parent_path());
+  return surface;
+}
+
 // Issue "prepare every pose users bring", failure class "an interior edge
 // or face between surface vertices leaves the example": a valid tet mesh of a
 // clean example covers exactly its solid, so when some rigid edge or face
@@ -119,13 +138,9 @@ TEST(PoseCorpusRigidSimplices, PlacementAloneFailsWhereARigidSimplexLeavesTheExa
 #if defined(__SANITIZE_ADDRESS__)
   GTEST_SKIP() << "slow under AddressSanitizer; ExampleAwareTets covers the code there";
 #endif
-  const std::string tarball = testing_cgal::cgalDataTarball();
-  if (tarball.empty()) GTEST_SKIP() << testing_cgal::kMissingCgalDemo;
-  const std::filesystem::path meshes =
-      testing_cgal::extractCgalMeshes(tarball, {"cactus.off"}, "cactus_rigid");
-  ASSERT_FALSE(meshes.empty());
-  const SurfaceMesh surface = readSurface((meshes / "cactus.off").string());
-  std::filesystem::remove_all(meshes.parent_path().parent_path());
+  const std::optional<SurfaceMesh> cactus = cactusSurface("cactus_rigid");
+  if (!cactus) GTEST_SKIP() << testing_cgal::kMissingCgalDemo;
+  const SurfaceMesh& surface = *cactus;
   const TetMesh rest = tetrahedralize(surface);
   const int surfaceCount = static_cast<int>(surface.vertices.rows());
   ExampleAwareOptions placementOnly;
@@ -151,19 +166,16 @@ TEST(PoseCorpusRigidSimplices, PlacementAloneFailsWhereARigidSimplexLeavesTheExa
 // by all examples, the first frames of a long animation spent it and later
 // clean frames kept inverted tets that their own rounds repair (on 48
 // harshly skinned dino frames of the prepare rehearsal, 8 clean frames kept
-// some, 6 with a budget per example). Here the cactus's clean poses with a budget of one round: with
-// the shared budget twist720 spent it and twist1080 kept 28 inverted tets.
+// some, 6 with a budget per example). Here the cactus's clean poses with a
+// budget of one round: with the shared budget twist720 spent it and
+// twist1080 kept 28 inverted tets.
 TEST(PoseCorpusRefinementBudget, EveryCleanExampleGetsItsOwnRounds) {
 #if defined(__SANITIZE_ADDRESS__)
   GTEST_SKIP() << "slow under AddressSanitizer; ExampleAwareTets covers the code there";
 #endif
-  const std::string tarball = testing_cgal::cgalDataTarball();
-  if (tarball.empty()) GTEST_SKIP() << testing_cgal::kMissingCgalDemo;
-  const std::filesystem::path meshes =
-      testing_cgal::extractCgalMeshes(tarball, {"cactus.off"}, "cactus_budget");
-  ASSERT_FALSE(meshes.empty());
-  const SurfaceMesh surface = readSurface((meshes / "cactus.off").string());
-  std::filesystem::remove_all(meshes.parent_path().parent_path());
+  const std::optional<SurfaceMesh> cactus = cactusSurface("cactus_budget");
+  if (!cactus) GTEST_SKIP() << testing_cgal::kMissingCgalDemo;
+  const SurfaceMesh& surface = *cactus;
   const TetMesh rest = tetrahedralize(surface);
   const int surfaceCount = static_cast<int>(surface.vertices.rows());
   ExampleAwareOptions small;
