@@ -180,7 +180,7 @@ struct CompatibleTetBuilder::Impl {
       const std::vector<int> region = interiorRegion(inverted, rings);
       if (!region.empty()) {
         rounds += untangle(rest.tets, elements, region, options.untangleRounds,
-                           effort.iterationsPerRound, effort.stagnantRounds, current)
+                           effort.iterationsPerRound, current)
                       .rounds;
       }
       std::vector<int> now = invertedTets(current, rest.tets);

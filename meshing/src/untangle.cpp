@@ -26,6 +26,10 @@ constexpr double kRelativeGradientTolerance = 1e-3;
 constexpr size_t kTetGrain = 1024;
 // Free vertices per TBB task of the gradient gather (~20 corners each).
 constexpr size_t kVertexGrain = 1024;
+// An untangling attempt gives up when this many rounds in a row did not
+// raise the smallest det F: the free region is too small (or the example
+// cannot be embedded), and a larger region or refinement is the remedy.
+constexpr int kStagnantRounds = 8;
 
 class UntangleEnergy {
  public:
@@ -171,7 +175,7 @@ class UntangleEnergy {
   std::vector<int> active_;
   std::vector<double> tetEnergy_;                         // per active tet
   std::vector<Eigen::Matrix<double, 3, 4>> tetGradient_;  // per active tet
-  std::vector<int> cornerStart_;                          // per free vertex: its range in corners_
+  std::vector<int> cornerStart_;  // per free vertex: its range in corners_
   std::vector<Corner> corners_;
   double totalVolume_ = 0.0;
 };
@@ -244,7 +248,7 @@ void minimiseLbfgs(UntangleEnergy& energy, double epsilon, int maxIterations, Ei
 
 UntangleOutcome untangle(const Tets& tets, const std::vector<TetElement>& elements,
                          const std::vector<int>& freeVertices, int maxRounds,
-                         int iterationsPerRound, int stagnantRounds, Vertices& positions) {
+                         int iterationsPerRound, Vertices& positions) {
   UntangleEnergy energy(tets, elements, freeVertices, positions);
   UntangleOutcome outcome;
   outcome.minDet = energy.minDet();
@@ -254,7 +258,7 @@ UntangleOutcome untangle(const Tets& tets, const std::vector<TetElement>& elemen
   double epsilon = 1.0;
   double bestMinDet = outcome.minDet;
   int stagnant = 0;
-  while (outcome.minDet <= 0.0 && outcome.rounds < maxRounds && stagnant < stagnantRounds) {
+  while (outcome.minDet <= 0.0 && outcome.rounds < maxRounds && stagnant < kStagnantRounds) {
     const double before = energy.evaluate(x, epsilon, nullptr);
     minimiseLbfgs(energy, epsilon, iterationsPerRound, x);
     const double after = energy.evaluate(x, epsilon, nullptr);

@@ -21,11 +21,10 @@ struct UntangleOutcome {
 /// Moves the vertices listed in `freeVertices` (distinct indices into
 /// `positions`, #V by 3) to remove inverted tets among the tets touching
 /// them; every other vertex stays put. Stops as soon as all those tets have
-/// det F > 0, after maxRounds rounds of at most iterationsPerRound L-BFGS
-/// iterations each, or after stagnantRounds rounds in a row that did not
-/// raise the smallest det F.
+/// det F > 0, or after maxRounds rounds of at most iterationsPerRound L-BFGS
+/// iterations each.
 UntangleOutcome untangle(const Tets& tets, const std::vector<TetElement>& elements,
                          const std::vector<int>& freeVertices, int maxRounds,
-                         int iterationsPerRound, int stagnantRounds, Vertices& positions);
+                         int iterationsPerRound, Vertices& positions);
 
 }  // namespace tetblend

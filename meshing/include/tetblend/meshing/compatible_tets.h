@@ -37,8 +37,8 @@
 
 namespace tetblend {
 
-/// How far one untangling attempt goes before it gives up (the free region,
-/// the L-BFGS work per round, and when progress counts as stalled).
+/// How far one untangling attempt goes: the free region and the L-BFGS work
+/// per round.
 struct UntangleEffort {
   /// The free region stops growing past this many tet-rings (0: it grows
   /// until the whole interior is free). A bound makes hopeless cases (an
@@ -49,10 +49,6 @@ struct UntangleEffort {
   /// the same valid placements as 100 in a third of the time (10 leave clean
   /// poses of knot1, elephant and handle inverted).
   int iterationsPerRound = 30;
-  /// The attempt gives up when this many rounds in a row did not raise the
-  /// smallest det F: the free region is too small (or the example cannot be
-  /// embedded), and a larger region or refinement is the remedy.
-  int stagnantRounds = 8;
 };
 
 /// Options of CompatibleTetBuilder, with their defaults.

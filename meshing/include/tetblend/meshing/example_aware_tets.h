@@ -57,8 +57,8 @@ struct ExampleAwareOptions {
   /// effort). On 48 harshly skinned armadillo frames (41 intersecting) this
   /// took about half the time of the clean examples' effort and excluded 7 %
   /// more tets (16356 against 15268 of 135k); also giving up after 3 stalled
-  /// rounds instead of 8 excluded 16703 and was no faster.
-  UntangleEffort intersectingUntangle{3, 10, 8};
+  /// rounds instead of untangle.cpp's 8 excluded 16703 and was no faster.
+  UntangleEffort intersectingUntangle{3, 10};
 };
 
 /// The compatible tet meshes of a rest mesh and its examples.
