@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "power_of_two.h"
+#include "tetblend/core/cofactor.h"
 #include "tetblend/core/error.h"
 #include "tetblend/core/sym3.h"
 
@@ -33,16 +34,6 @@ constexpr int kNewtonMaxIterations = 30;
 double frobeniusNorm(const Eigen::Matrix3d& m) {
   const double n = m.norm();
   return std::isinf(n) ? m.stableNorm() : n;
-}
-
-/// Cofactor matrix of x, det(x) x^{-T}: its columns c_i satisfy c_i . x_j =
-/// det(x) delta_ij, i.e. c^T x = det(x) I.
-Eigen::Matrix3d cofactor(const Eigen::Matrix3d& x) {
-  Eigen::Matrix3d c;
-  c.col(0) = x.col(1).cross(x.col(2));
-  c.col(1) = x.col(2).cross(x.col(0));
-  c.col(2) = x.col(0).cross(x.col(1));
-  return c;
 }
 
 [[noreturn]] void throwNotPositive(const char* function, double det) {

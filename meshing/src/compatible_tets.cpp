@@ -175,17 +175,17 @@ struct CompatibleTetBuilder::Impl {
   int untangleInverted(Vertices& positions, const UntangleEffort& effort) const {
     int rounds = 0;
     std::vector<int> inverted = invertedTets(positions, rest.tets);
-    Vertices current = positions;
     for (int rings = options.untangleRings; !inverted.empty(); rings *= 2) {
       const std::vector<int> region = interiorRegion(inverted, rings);
+      Vertices current = positions;  // every attempt starts from the best state
       if (!region.empty()) {
-        rounds += untangle(rest.tets, elements, region, options.untangleRounds,
+        rounds += untangle(rest.tets, elements, region, effort.maxRounds,
                            effort.iterationsPerRound, current)
                       .rounds;
       }
       std::vector<int> now = invertedTets(current, rest.tets);
       if (now.size() < inverted.size()) {
-        positions = current;
+        positions = std::move(current);
         inverted = std::move(now);
       }
       if (static_cast<int>(region.size()) == interiorCount) break;

@@ -1,35 +1,76 @@
 #include "untangle.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
-#include <deque>
 #include <limits>
+#include <tuple>
+#include <utility>
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
 #include <Eigen/Geometry>
 #include <Eigen/LU>
+#include <Eigen/SparseCholesky>
+#include <Eigen/SparseCore>
+#ifdef TETBLEND_HAVE_CHOLMOD
+#include <Eigen/CholmodSupport>
+#endif
 
-#include "tetblend/core/lane_math.h"
+#include "untangle_tet_energy.h"
 
 namespace tetblend {
 namespace {
 
-constexpr double kVolumeWeight = 0.5;  // θ: weight of the volume term (paper's choice in 3D)
-constexpr int kLbfgsMemory = 10;
+using SparseMatrix = Eigen::SparseMatrix<double>;
+using Matrix12d = Eigen::Matrix<double, 12, 12>;
+
 constexpr double kArmijo = 1e-4;
 constexpr int kMaxHalvings = 40;
 // Gradient-norm stop of one round, relative to the gradient at its start.
 constexpr double kRelativeGradientTolerance = 1e-3;
-// Active tets per TBB task (~0.2 µs of work each).
+// Active tets per TBB task (~0.2 µs of work each for the energy, a few µs
+// for the Hessian).
 constexpr size_t kTetGrain = 1024;
-// Free vertices per TBB task of the gradient gather (~20 corners each).
+// Free vertices per TBB task of the gradient and Hessian gathers (~20
+// corners each).
 constexpr size_t kVertexGrain = 1024;
-// An untangling attempt gives up when this many rounds in a row did not
-// raise the smallest det F: the free region is too small (or the example
-// cannot be embedded), and a larger region or refinement is the remedy.
+// An untangling attempt gives up when this many rounds in a row neither
+// raised the smallest det F nor lowered the count of inverted tets: the free
+// region is too small (or the example cannot be embedded), and a larger
+// region or refinement is the remedy. (Rounds with Newton steps converge at
+// each ε, so min det F can sit still for many rounds while the count falls:
+// judged by min det F alone, cactus's 1080° twist stopped with 6 tets
+// inverted, 27 → 6 in 12 rounds.)
 constexpr int kStagnantRounds = 8;
+// It also gives up once ε falls below this fraction of |min det F| with tets
+// still inverted: the barrier then holds them inverted while the energy
+// grows like 1/ε (on the hard-pose corpus, successful attempts kept ε above
+// |min det F|; stuck ones went on to ε = 1e-5 at 10^5 times the energy).
+// 0.01 stopped some attempts that a later, larger region would have started
+// from a better state: knot1's 720° twist then kept 8 tets.
+constexpr double kHopelessEpsilon = 0.001;
+// The first ε, relative to |min det F| at the start (at most 1, the paper's
+// start): a start that is nearly valid (a repair after a split, a larger
+// region after a smaller one) keeps its valid tets, where ε = 1 lets the
+// whole region relax first (on knot1's 720° twist, 1 inverted tet became
+// 25 that way).
+constexpr double kStartEpsilonPerDet = 2.0;
+// σ, the smallest relative energy decrease a round is credited with in the
+// paper's ε update (Alg. 1, σ = max(1 − E_after / E_before, 0.1)): ε then
+// shrinks by at least about 5 % per round. 0.3 (16 %) made the corpus
+// about 1.4 times faster but left 4 clean poses with 69 inverted tets,
+// against 3 with 9 (both before the stall test counted inverted tets).
+constexpr double kSmallestDecrease = 0.1;
+// Diagonal shift of the Newton matrix relative to its largest diagonal entry:
+// the projected Hessian is only semi-definite. Raised ×100 while the
+// factorisation fails.
+constexpr double kRelativeShift = 1e-10;
+constexpr int kShiftAttempts = 6;
+// Unknowns (3 per free vertex) from which NewtonSolver takes CHOLMOD's
+// supernodal factorisation: 2 k free vertices.
+constexpr Eigen::Index kSupernodalUnknowns = 6000;
 
 class UntangleEnergy {
  public:
@@ -71,6 +112,7 @@ class UntangleEnergy {
         if (v >= 0) corners_[static_cast<size_t>(next[static_cast<size_t>(v)]++)] = {i, a};
       }
     }
+    buildNewtonPattern();
   }
 
   Eigen::VectorXd freeVariables() const {
@@ -104,62 +146,163 @@ class UntangleEnergy {
     for (double e : tetEnergy_) energy += e;
     if (!wantGradient) return energy;
     gradient->resize(x.size());
-    tbb::parallel_for(tbb::blocked_range<size_t>(0, freeVertices_.size(), kVertexGrain),
-                      [&](const tbb::blocked_range<size_t>& range) {
-                        for (size_t v = range.begin(); v != range.end(); ++v) {
-                          Eigen::Vector3d sum = Eigen::Vector3d::Zero();
-                          for (int k = cornerStart_[v]; k < cornerStart_[v + 1]; ++k) {
-                            const Corner& c = corners_[static_cast<size_t>(k)];
-                            sum += tetGradient_[c.activeTet].col(c.corner);
-                          }
-                          gradient->segment<3>(3 * static_cast<Eigen::Index>(v)) = sum;
-                        }
-                      });
+    forEachFreeVertex([&](size_t v) {
+      Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+      for (int k = cornerStart_[v]; k < cornerStart_[v + 1]; ++k) {
+        const Corner& c = corners_[static_cast<size_t>(k)];
+        sum += tetGradient_[c.activeTet].col(c.corner);
+      }
+      gradient->segment<3>(3 * static_cast<Eigen::Index>(v)) = sum;
+    });
     return energy;
   }
 
-  double minDet() const {
-    double result = std::numeric_limits<double>::infinity();
+  // The Hessian of the energy at the current positions with every tet's
+  // part projected to positive semi-definite (projected Newton), as the full
+  // symmetric 3#free by 3#free matrix on the pattern of buildNewtonPattern.
+  // Gathered per free vertex column in tet order: deterministic.
+  SparseMatrix& projectedHessian(double epsilon) {
+    tetHessian_.resize(active_.size());
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, active_.size(), kTetGrain),
+                      [&](const tbb::blocked_range<size_t>& range) {
+                        for (size_t i = range.begin(); i != range.end(); ++i) {
+                          const int t = active_[i];
+                          const TetElement& element = elements_[static_cast<size_t>(t)];
+                          const Eigen::Matrix3d f =
+                              deformationGradient(positions_, tets_.row(t), element);
+                          tetHessian_[i] = cornerHessian(
+                              untangleTetHessian(f, epsilon, /*projected=*/true), element,
+                              element.volume / totalVolume_);
+                        }
+                      });
+    double* values = hessian_.valuePtr();
+    std::fill(values, values + hessian_.nonZeros(), 0.0);
+    forEachFreeVertex([&](size_t column) {
+      for (int k = cornerStart_[column]; k < cornerStart_[column + 1]; ++k) {
+        const Corner& c = corners_[static_cast<size_t>(k)];
+        const Matrix12d& tetHessian = tetHessian_[c.activeTet];
+        for (int q = 0; q < 4; ++q) {
+          const int position = blockPosition_[static_cast<size_t>(k)][static_cast<size_t>(q)];
+          if (position < 0) continue;
+          for (int l = 0; l < 3; ++l) {
+            double* target =
+                values + hessian_.outerIndexPtr()[3 * column + static_cast<size_t>(l)] + 3 * position;
+            for (int r = 0; r < 3; ++r) target[r] += tetHessian(3 * q + r, 3 * c.corner + l);
+          }
+        }
+      }
+    });
+    return hessian_;
+  }
+
+  // The smallest det F over the active tets and how many have det F <= 0.
+  std::pair<double, int> determinants() const {
+    double smallest = std::numeric_limits<double>::infinity();
+    int inverted = 0;
     for (int t : active_) {
-      result = std::min(
-          result, deformationGradient(positions_, tets_.row(t), elements_[static_cast<size_t>(t)])
-                      .determinant());
+      const double det =
+          deformationGradient(positions_, tets_.row(t), elements_[static_cast<size_t>(t)])
+              .determinant();
+      smallest = std::min(smallest, det);
+      if (!(det > 0.0)) ++inverted;
     }
-    return result;
+    return {smallest, inverted};
   }
 
   const Vertices& positions() const { return positions_; }
 
  private:
+  template <typename Body>
+  void forEachFreeVertex(const Body& body) const {
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, freeVertices_.size(), kVertexGrain),
+                      [&](const tbb::blocked_range<size_t>& range) {
+                        for (size_t v = range.begin(); v != range.end(); ++v) body(v);
+                      });
+  }
+
+  // The tet's Hessian in its corner positions (12 by 12, corner a at rows
+  // 3a..3a+2) from h = ∂²f/∂vec(F)²: F = X Gᵀ gives ∂vec(F)/∂x_a,k =
+  // G(j, a) at entry k + 3j, so H = Bᵀ h B with that 9 by 12 matrix B.
+  static Matrix12d cornerHessian(const Matrix9d& h, const TetElement& element, double weight) {
+    const Eigen::Matrix<double, 3, 4>& g = element.gradients;
+    Eigen::Matrix<double, 9, 12> hb;
+    for (int a = 0; a < 4; ++a) {
+      for (int k = 0; k < 3; ++k) {
+        hb.col(3 * a + k) = g(0, a) * h.col(k) + g(1, a) * h.col(k + 3) + g(2, a) * h.col(k + 6);
+      }
+    }
+    Matrix12d result;
+    for (int a = 0; a < 4; ++a) {
+      for (int k = 0; k < 3; ++k) {
+        result.row(3 * a + k) =
+            weight * (g(0, a) * hb.row(k) + g(1, a) * hb.row(k + 3) + g(2, a) * hb.row(k + 6));
+      }
+    }
+    return result;
+  }
+
   // Energy of active tet i into tetEnergy_[i]; with `wantGradient`, its
   // derivative with respect to each corner into tetGradient_[i] (3 by 4).
   void evaluateTet(size_t i, double epsilon, bool wantGradient) {
     const int t = active_[i];
-    const Eigen::RowVector4i tet = tets_.row(t);
     const TetElement& element = elements_[static_cast<size_t>(t)];
-    const Eigen::Matrix3d f = deformationGradient(positions_, tet, element);
-    const double j = f.determinant();
-    const double root = std::sqrt(epsilon * epsilon + j * j);
-    // χ = (J + root) / 2, written for J <= 0 as ε² / (2 (root − J)): the sum
-    // cancels catastrophically there (to 0 once ε² < ulp(J²)).
-    const double chi = j > 0.0 ? 0.5 * (j + root) : 0.5 * epsilon * epsilon / (root - j);
-    const double dChi = chi / root;
-    const double frobenius = f.squaredNorm();
-    const double chiPow = chi >= std::numeric_limits<double>::min()
-                              ? lane_math::inverseCbrtSquaredLane(chi)
-                              : std::pow(chi, -2.0 / 3.0);
+    const Eigen::Matrix3d f = deformationGradient(positions_, tets_.row(t), element);
     const double weight = element.volume / totalVolume_;
-    tetEnergy_[i] =
-        weight * ((1 - kVolumeWeight) * frobenius * chiPow + kVolumeWeight * (j * j + 1) / chi);
-    if (!wantGradient) return;
-    const double dEdJ = (1 - kVolumeWeight) * frobenius * (-2.0 / 3.0) * chiPow / chi * dChi +
-                        kVolumeWeight * (2 * j / chi - (j * j + 1) * dChi / (chi * chi));
-    Eigen::Matrix3d cofactor;
-    cofactor.col(0) = f.col(1).cross(f.col(2));
-    cofactor.col(1) = f.col(2).cross(f.col(0));
-    cofactor.col(2) = f.col(0).cross(f.col(1));
-    const Eigen::Matrix3d dEdF = weight * (2 * (1 - kVolumeWeight) * chiPow * f + dEdJ * cofactor);
-    tetGradient_[i] = dEdF * element.gradients;
+    Eigen::Matrix3d dEdF;
+    tetEnergy_[i] = weight * untangleTetEnergy(f, epsilon, wantGradient ? &dEdF : nullptr);
+    if (wantGradient) tetGradient_[i] = weight * dEdF * element.gradients;
+  }
+
+  // The pattern of the Newton matrix: a 3 by 3 block (r, c) for every pair
+  // of free vertices sharing an active tet, both triangles stored, the rows
+  // of each column block sorted (blockRows_ from blockStart_[c]).
+  void buildNewtonPattern() {
+    const size_t count = freeVertices_.size();
+    blockStart_.assign(count + 1, 0);
+    std::vector<std::vector<int>> rows(count);
+    for (size_t c = 0; c < count; ++c) {
+      for (int k = cornerStart_[c]; k < cornerStart_[c + 1]; ++k) {
+        const int t = active_[corners_[static_cast<size_t>(k)].activeTet];
+        for (int q = 0; q < 4; ++q) {
+          const int row = variable_[static_cast<size_t>(tets_(t, q))];
+          if (row >= 0) rows[c].push_back(row);
+        }
+      }
+      std::sort(rows[c].begin(), rows[c].end());
+      rows[c].erase(std::unique(rows[c].begin(), rows[c].end()), rows[c].end());
+      blockStart_[c + 1] = blockStart_[c] + static_cast<int>(rows[c].size());
+    }
+    blockRows_.reserve(static_cast<size_t>(blockStart_.back()));
+    for (const std::vector<int>& list : rows) blockRows_.insert(blockRows_.end(), list.begin(), list.end());
+    const Eigen::Index size = 3 * static_cast<Eigen::Index>(count);
+    hessian_.resize(size, size);
+    Eigen::VectorXi perColumn(size);
+    for (size_t c = 0; c < count; ++c) {
+      perColumn.segment<3>(3 * static_cast<Eigen::Index>(c)).setConstant(3 * (blockStart_[c + 1] - blockStart_[c]));
+    }
+    hessian_.reserve(perColumn);
+    for (size_t c = 0; c < count; ++c) {
+      for (int l = 0; l < 3; ++l) {
+        const Eigen::Index column = 3 * static_cast<Eigen::Index>(c) + l;
+        for (int k = blockStart_[c]; k < blockStart_[c + 1]; ++k) {
+          for (int r = 0; r < 3; ++r) hessian_.insert(3 * blockRows_[static_cast<size_t>(k)] + r, column) = 0.0;
+        }
+      }
+    }
+    hessian_.makeCompressed();
+    blockPosition_.resize(corners_.size());
+    for (size_t c = 0; c < count; ++c) {
+      const auto first = blockRows_.begin() + blockStart_[c];
+      const auto last = blockRows_.begin() + blockStart_[c + 1];
+      for (int k = cornerStart_[c]; k < cornerStart_[c + 1]; ++k) {
+        const int t = active_[corners_[static_cast<size_t>(k)].activeTet];
+        for (int q = 0; q < 4; ++q) {
+          const int row = variable_[static_cast<size_t>(tets_(t, q))];
+          blockPosition_[static_cast<size_t>(k)][static_cast<size_t>(q)] =
+              row < 0 ? -1 : static_cast<int>(std::lower_bound(first, last, row) - first);
+        }
+      }
+    }
   }
 
   struct Corner {
@@ -175,44 +318,92 @@ class UntangleEnergy {
   std::vector<int> active_;
   std::vector<double> tetEnergy_;                         // per active tet
   std::vector<Eigen::Matrix<double, 3, 4>> tetGradient_;  // per active tet
+  std::vector<Matrix12d> tetHessian_;                     // per active tet, on demand
   std::vector<int> cornerStart_;  // per free vertex: its range in corners_
   std::vector<Corner> corners_;
+  std::vector<int> blockStart_;  // per free vertex: its range in blockRows_
+  std::vector<int> blockRows_;
+  // Per corner record (as corners_): for each corner q of its tet, the
+  // position of q's free vertex among its column's block rows, or -1.
+  std::vector<std::array<int, 4>> blockPosition_;
+  SparseMatrix hessian_;
   double totalVolume_ = 0.0;
 };
 
-// L-BFGS with Armijo backtracking (Nocedal & Wright Alg. 7.4/7.5).
-void minimiseLbfgs(UntangleEnergy& energy, double epsilon, int maxIterations, Eigen::VectorXd& x) {
+// Sparse Cholesky factorisation of the Newton matrix, pattern analysed once:
+// Eigen's simplicial LLᵀ below kSupernodalUnknowns, CHOLMOD's supernodal
+// LLᵀ (BLAS-3 on dense supernodes) above when tetblend has CHOLMOD. Most
+// attempts free a few hundred vertices, where CHOLMOD's OpenMP and BLAS
+// thread teams cost more than the factorisation: with CHOLMOD for every size
+// the 48-frame homer rehearsal spent 42 s of its 83 s in the kernel (threads
+// waiting), with the simplicial factorisation 1 s of 64 s.
+class NewtonSolver {
+ public:
+  void analyzePattern(const SparseMatrix& matrix) {
+#ifdef TETBLEND_HAVE_CHOLMOD
+    supernodal_ = matrix.rows() >= kSupernodalUnknowns;
+    if (supernodal_) {
+      supernodalSolver_.analyzePattern(matrix);
+      return;
+    }
+#endif
+    simplicialSolver_.analyzePattern(matrix);
+  }
+
+  bool factorize(const SparseMatrix& matrix) {
+#ifdef TETBLEND_HAVE_CHOLMOD
+    if (supernodal_) {
+      supernodalSolver_.factorize(matrix);
+      return supernodalSolver_.info() == Eigen::Success;
+    }
+#endif
+    simplicialSolver_.factorize(matrix);
+    return simplicialSolver_.info() == Eigen::Success;
+  }
+
+  Eigen::VectorXd solve(const Eigen::VectorXd& rightHandSide) const {
+#ifdef TETBLEND_HAVE_CHOLMOD
+    if (supernodal_) return supernodalSolver_.solve(rightHandSide);
+#endif
+    return simplicialSolver_.solve(rightHandSide);
+  }
+
+ private:
+  Eigen::SimplicialLLT<SparseMatrix, Eigen::Lower> simplicialSolver_;
+#ifdef TETBLEND_HAVE_CHOLMOD
+  Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower> supernodalSolver_;
+  bool supernodal_ = false;
+#endif
+};
+
+// Projected Newton with Armijo backtracking (Nocedal & Wright Alg. 3.1 with
+// the Hessian made positive definite per element): at most maxIterations
+// steps, until the gradient falls below kRelativeGradientTolerance of its
+// start. The pattern is analysed on the solver's first use.
+void minimiseNewton(UntangleEnergy& energy, double epsilon, int maxIterations, bool& analysed,
+                    NewtonSolver& solver, Eigen::VectorXd& x) {
   Eigen::VectorXd gradient;
   double value = energy.evaluate(x, epsilon, &gradient);
   const double startNorm = gradient.norm();
-  std::deque<Eigen::VectorXd> sHistory;
-  std::deque<Eigen::VectorXd> yHistory;
   for (int iteration = 0; iteration < maxIterations; ++iteration) {
     if (gradient.norm() <= kRelativeGradientTolerance * startNorm) break;
-    // Two-loop recursion.
-    Eigen::VectorXd q = gradient;
-    std::vector<double> alpha(sHistory.size());
-    for (int i = static_cast<int>(sHistory.size()) - 1; i >= 0; --i) {
-      alpha[i] = sHistory[i].dot(q) / yHistory[i].dot(sHistory[i]);
-      q -= alpha[i] * yHistory[i];
+    SparseMatrix& hessian = energy.projectedHessian(epsilon);
+    if (!analysed) {
+      solver.analyzePattern(hessian);
+      analysed = true;
     }
-    if (!sHistory.empty()) {
-      q *= sHistory.back().dot(yHistory.back()) / yHistory.back().squaredNorm();
-    } else {
-      q /= std::max(gradient.norm(), 1.0);
+    double shift = kRelativeShift * hessian.diagonal().maxCoeff();
+    hessian.diagonal().array() += shift;
+    bool factored = false;
+    for (int attempt = 0; attempt < kShiftAttempts && !factored; ++attempt) {
+      factored = solver.factorize(hessian);
+      hessian.diagonal().array() += 99.0 * shift;  // the next attempt's shift, ×100
+      shift *= 100.0;
     }
-    for (size_t i = 0; i < sHistory.size(); ++i) {
-      const double beta = yHistory[i].dot(q) / yHistory[i].dot(sHistory[i]);
-      q += (alpha[i] - beta) * sHistory[i];
-    }
-    Eigen::VectorXd direction = -q;
-    double slope = gradient.dot(direction);
-    if (slope >= 0.0) {  // not a descent direction: restart from steepest descent
-      sHistory.clear();
-      yHistory.clear();
-      direction = -gradient / std::max(gradient.norm(), 1.0);
-      slope = gradient.dot(direction);
-    }
+    if (!factored) break;
+    const Eigen::VectorXd direction = -solver.solve(gradient);
+    const double slope = gradient.dot(direction);
+    if (!(slope < 0.0)) break;
     double step = 1.0;
     Eigen::VectorXd trial;
     Eigen::VectorXd trialGradient;
@@ -227,16 +418,6 @@ void minimiseLbfgs(UntangleEnergy& energy, double epsilon, int maxIterations, Ei
       }
     }
     if (!accepted) break;
-    Eigen::VectorXd s = trial - x;
-    Eigen::VectorXd y = trialGradient - gradient;
-    if (s.dot(y) > 1e-300) {
-      sHistory.push_back(std::move(s));
-      yHistory.push_back(std::move(y));
-      if (static_cast<int>(sHistory.size()) > kLbfgsMemory) {
-        sHistory.pop_front();
-        yHistory.pop_front();
-      }
-    }
     x = trial;
     gradient = trialGradient;
     value = trialValue;
@@ -251,31 +432,36 @@ UntangleOutcome untangle(const Tets& tets, const std::vector<TetElement>& elemen
                          int iterationsPerRound, Vertices& positions) {
   UntangleEnergy energy(tets, elements, freeVertices, positions);
   UntangleOutcome outcome;
-  outcome.minDet = energy.minDet();
+  auto [minDet, inverted] = energy.determinants();
   Eigen::VectorXd x = energy.freeVariables();
+  NewtonSolver solver;
+  bool analysed = false;
   // ε schedule of the paper (Alg. 1): start at the scale of the unit
   // Jacobian, then shrink according to the energy decrease of each round.
-  double epsilon = 1.0;
-  double bestMinDet = outcome.minDet;
+  double epsilon = std::min(1.0, kStartEpsilonPerDet * std::abs(minDet));
+  double bestMinDet = minDet;
+  int fewestInverted = inverted;
   int stagnant = 0;
-  while (outcome.minDet <= 0.0 && outcome.rounds < maxRounds && stagnant < kStagnantRounds) {
+  while (minDet <= 0.0 && outcome.rounds < maxRounds && stagnant < kStagnantRounds &&
+         epsilon >= -kHopelessEpsilon * minDet) {
     const double before = energy.evaluate(x, epsilon, nullptr);
-    minimiseLbfgs(energy, epsilon, iterationsPerRound, x);
+    minimiseNewton(energy, epsilon, iterationsPerRound, analysed, solver, x);
     const double after = energy.evaluate(x, epsilon, nullptr);
     ++outcome.rounds;
-    outcome.minDet = energy.minDet();
-    if (outcome.minDet > bestMinDet) {
-      bestMinDet = outcome.minDet;
+    std::tie(minDet, inverted) = energy.determinants();
+    if (minDet > bestMinDet || inverted < fewestInverted) {
       stagnant = 0;
     } else {
       ++stagnant;
     }
-    const double sigma = std::max(1.0 - after / before, 0.1);
-    const double minDet = outcome.minDet;
+    bestMinDet = std::max(bestMinDet, minDet);
+    fewestInverted = std::min(fewestInverted, inverted);
+    const double sigma = std::max(1.0 - after / before, kSmallestDecrease);
     const double mu =
         (1.0 - sigma) * 0.5 * (minDet + std::sqrt(epsilon * epsilon + minDet * minDet));
     epsilon = minDet < mu ? 2.0 * std::sqrt(mu * (mu - minDet)) : 1e-13;
   }
+  outcome.minDet = minDet;
   positions = energy.positions();
   return outcome;
 }

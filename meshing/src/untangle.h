@@ -4,7 +4,15 @@
 // lines of code", ACM TOG 40(4), 2021): minimise
 //   E_ε(x) = Σ_t vol_t [ (1-θ) ‖F_t‖² / χ(J_t, ε)^{2/3} + θ (J_t² + 1) / χ(J_t, ε) ]
 // with J_t = det F_t and χ(J, ε) = (J + sqrt(ε² + J²)) / 2, a smooth positive
-// stand-in for J, while the regularisation ε decreases to 0.
+// stand-in for J, while the regularisation ε decreases to 0 (the paper's
+// Alg. 1). Each ε is minimised by projected Newton steps (every tet's
+// Hessian made positive semi-definite from its closed-form eigensystem,
+// untangle_tet_energy.h; one sparse Cholesky factorisation per step, the
+// pattern analysed once) instead of the paper's L-BFGS: on the hard-pose
+// corpus L-BFGS with 30 iterations per ε left 6 of 48 clean poses with 492
+// inverted tets (44 s), and knot1's 1080° twist alone kept 4 tets after 14
+// minutes with 300 iterations per ε; Newton with 2 steps per ε, with the
+// stall and start rules of untangle.cpp, leaves 1 pose with 75 (50 s).
 
 #include <vector>
 
@@ -21,8 +29,8 @@ struct UntangleOutcome {
 /// Moves the vertices listed in `freeVertices` (distinct indices into
 /// `positions`, #V by 3) to remove inverted tets among the tets touching
 /// them; every other vertex stays put. Stops as soon as all those tets have
-/// det F > 0, or after maxRounds rounds of at most iterationsPerRound L-BFGS
-/// iterations each.
+/// det F > 0, or after maxRounds rounds of at most iterationsPerRound Newton
+/// steps each, or when it stalls.
 UntangleOutcome untangle(const Tets& tets, const std::vector<TetElement>& elements,
                          const std::vector<int>& freeVertices, int maxRounds,
                          int iterationsPerRound, Vertices& positions);

@@ -27,7 +27,8 @@
 //  3. if tets are still inverted: untangling of the interior vertices by
 //     minimising a regularised distortion energy with a decreasing
 //     regularisation (Garanzha, Kaporin, Kudryavtseva, Protais, Ray,
-//     Sokolov, "Foldover-free maps in 50 lines of code", 2021).
+//     Sokolov, "Foldover-free maps in 50 lines of code", 2021), each value
+//     by projected Newton steps.
 // The result reports exactly which tets remain inverted, if any.
 
 #include <memory>
@@ -37,18 +38,22 @@
 
 namespace tetblend {
 
-/// How far one untangling attempt goes: the free region and the L-BFGS work
-/// per round.
+/// How far one untangling attempt goes: the free region, the rounds (values
+/// of the regularisation ε) and the Newton steps per round.
 struct UntangleEffort {
   /// The free region stops growing past this many tet-rings (0: it grows
   /// until the whole interior is free). A bound makes hopeless cases (an
   /// example surface that intersects itself) fail fast.
   int maxRings = 0;
-  /// Maximum L-BFGS iterations per untangling round. Each round only follows
-  /// the minimiser as ε shrinks: on the hard-pose corpus 30 iterations gave
-  /// the same valid placements as 100 in a third of the time (10 leave clean
-  /// poses of knot1, elephant and handle inverted).
-  int iterationsPerRound = 30;
+  /// Maximum projected Newton steps per untangling round. A round only
+  /// follows the minimiser as ε shrinks by 5-10 %: on the hard-pose corpus
+  /// (before untangle.cpp's stall and start rules) 2 steps left 3 clean
+  /// poses with 9 inverted tets in 76 s, 5 steps 4 with 72 in 88 s.
+  int iterationsPerRound = 2;
+  /// Maximum rounds per attempt. ε shrinks by at least 5 % per round, so 150
+  /// rounds reach ε ≈ 5e-4 (60 rounds, 0.05, left knot1's 720° twist
+  /// with tets inverted at min det F = −0.06).
+  int maxRounds = 150;
 };
 
 /// Options of CompatibleTetBuilder, with their defaults.
@@ -75,11 +80,7 @@ struct CompatibleTetOptions {
   /// the inverted tets first; the ring count doubles while tets stay
   /// inverted, until the whole interior is free.
   int untangleRings = 3;
-  /// Maximum number of outer (regularisation-decrease) rounds per untangling
-  /// attempt. The regularisation shrinks by 10 % or more per round, so this
-  /// bounds the attempt to a few decades of ε.
-  int untangleRounds = 60;
-  /// Free region, iterations per round and stall test of each attempt.
+  /// Free region, rounds and Newton steps of each attempt.
   UntangleEffort untangleEffort;
 };
 
@@ -127,7 +128,7 @@ class CompatibleTetBuilder {
 
   /// Step 3 only, from `start` (#V by 3; rows 0..#S-1 the example surface,
   /// kept): untangles the interior around the inverted tets with `effort`
-  /// (the options' untangleRings and untangleRounds). Returns the result
+  /// (starting at the options' untangleRings). Returns the result
   /// measured as by place (harmonicInvertedCount and arapIterations are 0).
   /// Throws InputError on a wrong row count or non-finite positions.
   CompatibleTetResult repair(const Vertices& start, const UntangleEffort& effort) const;

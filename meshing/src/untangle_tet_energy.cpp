@@ -1,0 +1,149 @@
+#include "untangle_tet_energy.h"
+
+#include <cmath>
+#include <limits>
+
+#include <Eigen/Eigenvalues>
+#include <Eigen/Geometry>
+#include <Eigen/LU>
+
+#include "tetblend/core/cofactor.h"
+#include "tetblend/core/lane_math.h"
+
+namespace tetblend {
+namespace {
+
+// Below this ratio σ_1² / σ_0² rotationVariantSvd takes Jacobi's eigenvalue
+// iteration instead of the closed form (whose σ_1² then has lost most of its
+// digits), and a residual F v_1 below this fraction of F v_0 is taken as 0.
+constexpr double kRank1Ratio = 1e-12;
+
+// χ(J, ε) and its first two derivatives in J, with r = sqrt(ε² + J²):
+// χ' = χ / r, χ'' = ε² / (2 r³).
+struct Chi {
+  double value;
+  double first;
+  double second;
+};
+
+Chi chi(double j, double epsilon) {
+  const double root = std::sqrt(epsilon * epsilon + j * j);
+  // χ = (J + r) / 2, written for J <= 0 as ε² / (2 (r − J)): the sum cancels
+  // catastrophically there (to 0 once ε² < ulp(J²)).
+  const double value = j > 0.0 ? 0.5 * (j + root) : 0.5 * epsilon * epsilon / (root - j);
+  return {value, value / root, 0.5 * epsilon * epsilon / (root * root * root)};
+}
+
+// χ^{-2/3}.
+double chiPower(double chiValue) {
+  return chiValue >= std::numeric_limits<double>::min() ? lane_math::inverseCbrtSquaredLane(chiValue)
+                                                         : std::pow(chiValue, -2.0 / 3.0);
+}
+
+// F = U diag(σ) Vᵀ with U, V rotations and σ_0 >= σ_1 >= |σ_2|, σ_2 of the
+// sign of det F: V from the eigenvectors of FᵀF (closed form, or Jacobi's
+// iteration when F is close to rank 1, where the closed form's small
+// eigenvalues lose their digits), U by Gram-Schmidt of F V completed to a
+// rotation. A Newton model only needs it to rounding accuracy: the line
+// search measures the true energy.
+void rotationVariantSvd(const Eigen::Matrix3d& f, Eigen::Matrix3d& u, Eigen::Vector3d& sigma,
+                        Eigen::Matrix3d& v) {
+  const Eigen::Matrix3d gram = f.transpose() * f;
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen;
+  eigen.computeDirect(gram);
+  if (!(eigen.eigenvalues()(1) > kRank1Ratio * eigen.eigenvalues()(2))) eigen.compute(gram);
+  v.col(0) = eigen.eigenvectors().col(2);  // eigenvalues ascending
+  v.col(1) = eigen.eigenvectors().col(1);
+  v.col(2) = v.col(0).cross(v.col(1)).normalized();
+  const Eigen::Vector3d image0 = f * v.col(0);
+  u.col(0) = image0.norm() > 0.0 ? image0.normalized() : Eigen::Vector3d::UnitX();
+  Eigen::Vector3d image1 = f * v.col(1);
+  image1 -= u.col(0).dot(image1) * u.col(0);
+  u.col(1) = image1.norm() > kRank1Ratio * image0.norm() ? image1.normalized()
+                                                          : u.col(0).unitOrthogonal();
+  u.col(2) = u.col(0).cross(u.col(1));
+  for (int i = 0; i < 3; ++i) sigma(i) = u.col(i).dot(f * v.col(i));
+}
+
+}  // namespace
+
+double untangleTetEnergy(const Eigen::Matrix3d& f, double epsilon, Eigen::Matrix3d* dEdF) {
+  constexpr double a = 1.0 - kUntangleVolumeWeight;
+  constexpr double b = kUntangleVolumeWeight;
+  const double j = f.determinant();
+  const Chi c = chi(j, epsilon);
+  const double s = f.squaredNorm();
+  const double power = chiPower(c.value);
+  const double value = a * s * power + b * (j * j + 1.0) / c.value;
+  if (dEdF != nullptr) {
+    const double dJ = a * s * (-2.0 / 3.0) * power / c.value * c.first +
+                      b * (2.0 * j / c.value - (j * j + 1.0) * c.first / (c.value * c.value));
+    *dEdF = 2.0 * a * power * f + dJ * cofactor(f);
+  }
+  return value;
+}
+
+// f = ψ(I2, I3) with I2 = ‖F‖², I3 = J, so its Hessian has the closed-form
+// eigensystem of Smith, de Goes & Kim, "Analytic eigensystems for isotropic
+// distortion energies" (ACM TOG 38(1), 2019, sec. 4-5): with the
+// rotation-variant SVD F = U diag(σ) Vᵀ (U, V rotations, σ_3 carrying the
+// sign of J) and (i, j, k) a permutation of (0, 1, 2),
+//   twist U (e_i e_jᵀ − e_j e_iᵀ) Vᵀ / √2: λ = 2 ψ_2 + ψ_3 σ_k,
+//   flip  U (e_i e_jᵀ + e_j e_iᵀ) Vᵀ / √2: λ = 2 ψ_2 − ψ_3 σ_k,
+// and the three scalings U diag(a) Vᵀ with (λ, a) the eigenpairs of the
+// 3 by 3 Hessian of ψ(Σ σ_i², σ_0 σ_1 σ_2) in σ (ψ_22 = 0 here).
+Matrix9d untangleTetHessian(const Eigen::Matrix3d& f, double epsilon, bool projected) {
+  constexpr double a = 1.0 - kUntangleVolumeWeight;
+  constexpr double b = kUntangleVolumeWeight;
+  Eigen::Matrix3d u;
+  Eigen::Matrix3d v;
+  Eigen::Vector3d sigma;
+  rotationVariantSvd(f, u, sigma, v);
+  const double j = sigma.prod();
+  const Chi c = chi(j, epsilon);
+  const double s = sigma.squaredNorm();
+  const double power = chiPower(c.value);  // χ^{-2/3}
+  const double x = c.value;
+  const double psi2 = a * power;
+  const double psi23 = a * (-2.0 / 3.0) * power / x * c.first;
+  const double psi3 = a * s * (-2.0 / 3.0) * power / x * c.first +
+                      b * (2.0 * j / x - (j * j + 1.0) * c.first / (x * x));
+  const double psi33 =
+      a * s * power / x * ((10.0 / 9.0) * c.first * c.first / x - (2.0 / 3.0) * c.second) +
+      b * (2.0 / x - 4.0 * j * c.first / (x * x) - (j * j + 1.0) * c.second / (x * x) +
+           2.0 * (j * j + 1.0) * c.first * c.first / (x * x * x));
+
+  Matrix9d h = Matrix9d::Zero();
+  auto add = [&](double lambda, const Eigen::Matrix3d& q) {
+    if (projected && lambda <= 0.0) return;
+    const Eigen::Map<const Eigen::Matrix<double, 9, 1>> vecQ(q.data());
+    h.noalias() += lambda * vecQ * vecQ.transpose();
+  };
+  const double halfRoot2 = std::sqrt(0.5);
+  for (int k = 0; k < 3; ++k) {
+    const int i = (k + 1) % 3;
+    const int l = (k + 2) % 3;
+    const Eigen::Matrix3d outer = u.col(i) * v.col(l).transpose();
+    const Eigen::Matrix3d inner = u.col(l) * v.col(i).transpose();
+    add(2.0 * psi2 + psi3 * sigma(k), halfRoot2 * (outer - inner));
+    add(2.0 * psi2 - psi3 * sigma(k), halfRoot2 * (outer + inner));
+  }
+  Eigen::Vector3d products;  // ∂I3/∂σ_i
+  for (int i = 0; i < 3; ++i) products(i) = sigma((i + 1) % 3) * sigma((i + 2) % 3);
+  Eigen::Matrix3d scaling = 2.0 * psi23 * (sigma * products.transpose() + products * sigma.transpose()) +
+                            psi33 * products * products.transpose();
+  for (int i = 0; i < 3; ++i) {
+    scaling(i, i) += 2.0 * psi2;
+    for (int l = 0; l < 3; ++l) {
+      if (l != i) scaling(i, l) += psi3 * sigma(3 - i - l);
+    }
+  }
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> scalings(scaling);
+  for (int m = 0; m < 3; ++m) {
+    add(scalings.eigenvalues()(m),
+        u * scalings.eigenvectors().col(m).asDiagonal() * v.transpose());
+  }
+  return h;
+}
+
+}  // namespace tetblend
