@@ -57,7 +57,8 @@ struct ExampleAwareOptions {
   /// interior, 2 and 150). On 48 harshly skinned dino frames (27 with
   /// excluded tets where they intersect) this took 25 s against 32 s with
   /// the clean examples' steps and rounds, and excluded 4 % more tets (1458
-  /// against 1407 of 16 k).
+  /// against 1407 of 16 k; measured before untangle.cpp's stall and start
+  /// rules, with which the run takes 15 s and excludes 1384).
   UntangleEffort intersectingUntangle{3, 1, 40};
 };
 
