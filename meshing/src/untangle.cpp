@@ -330,7 +330,8 @@ class UntangleEnergy {
   double totalVolume_ = 0.0;
 };
 
-// Sparse Cholesky factorisation of the Newton matrix, pattern analysed once:
+// Sparse Cholesky factorisation of the Newton matrix, its pattern analysed on
+// the first factorisation (the pattern is fixed per attempt):
 // Eigen's simplicial LLᵀ below kSupernodalUnknowns, CHOLMOD's supernodal
 // LLᵀ (BLAS-3 on dense supernodes) above when tetblend has CHOLMOD. Most
 // attempts free a few hundred vertices, where CHOLMOD's OpenMP and BLAS
@@ -339,24 +340,18 @@ class UntangleEnergy {
 // waiting), with the simplicial factorisation 1 s of 64 s.
 class NewtonSolver {
  public:
-  void analyzePattern(const SparseMatrix& matrix) {
-#ifdef TETBLEND_HAVE_CHOLMOD
-    supernodal_ = matrix.rows() >= kSupernodalUnknowns;
-    if (supernodal_) {
-      supernodalSolver_.analyzePattern(matrix);
-      return;
-    }
-#endif
-    simplicialSolver_.analyzePattern(matrix);
-  }
-
   bool factorize(const SparseMatrix& matrix) {
 #ifdef TETBLEND_HAVE_CHOLMOD
+    if (!analysed_) supernodal_ = matrix.rows() >= kSupernodalUnknowns;
     if (supernodal_) {
+      if (!analysed_) supernodalSolver_.analyzePattern(matrix);
+      analysed_ = true;
       supernodalSolver_.factorize(matrix);
       return supernodalSolver_.info() == Eigen::Success;
     }
 #endif
+    if (!analysed_) simplicialSolver_.analyzePattern(matrix);
+    analysed_ = true;
     simplicialSolver_.factorize(matrix);
     return simplicialSolver_.info() == Eigen::Success;
   }
@@ -369,6 +364,7 @@ class NewtonSolver {
   }
 
  private:
+  bool analysed_ = false;
   Eigen::SimplicialLLT<SparseMatrix, Eigen::Lower> simplicialSolver_;
 #ifdef TETBLEND_HAVE_CHOLMOD
   Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower> supernodalSolver_;
@@ -376,29 +372,32 @@ class NewtonSolver {
 #endif
 };
 
+// Energies at the start and at the end of one minimisation.
+struct EnergyChange {
+  double before;
+  double after;
+};
+
 // Projected Newton with Armijo backtracking (Nocedal & Wright Alg. 3.1 with
 // the Hessian made positive definite per element): at most maxIterations
 // steps, until the gradient falls below kRelativeGradientTolerance of its
-// start. The pattern is analysed on the solver's first use.
-void minimiseNewton(UntangleEnergy& energy, double epsilon, int maxIterations, bool& analysed,
-                    NewtonSolver& solver, Eigen::VectorXd& x) {
+// start.
+EnergyChange minimiseNewton(UntangleEnergy& energy, double epsilon, int maxIterations,
+                            NewtonSolver& solver, Eigen::VectorXd& x) {
   Eigen::VectorXd gradient;
   double value = energy.evaluate(x, epsilon, &gradient);
+  const double before = value;
   const double startNorm = gradient.norm();
   for (int iteration = 0; iteration < maxIterations; ++iteration) {
     if (gradient.norm() <= kRelativeGradientTolerance * startNorm) break;
     SparseMatrix& hessian = energy.projectedHessian(epsilon);
-    if (!analysed) {
-      solver.analyzePattern(hessian);
-      analysed = true;
-    }
     double shift = kRelativeShift * hessian.diagonal().maxCoeff();
     hessian.diagonal().array() += shift;
-    bool factored = false;
-    for (int attempt = 0; attempt < kShiftAttempts && !factored; ++attempt) {
-      factored = solver.factorize(hessian);
-      hessian.diagonal().array() += 99.0 * shift;  // the next attempt's shift, ×100
+    bool factored = solver.factorize(hessian);
+    for (int attempt = 1; attempt < kShiftAttempts && !factored; ++attempt) {
+      hessian.diagonal().array() += 99.0 * shift;  // the shift ×100
       shift *= 100.0;
+      factored = solver.factorize(hessian);
     }
     if (!factored) break;
     const Eigen::VectorXd direction = -solver.solve(gradient);
@@ -423,6 +422,7 @@ void minimiseNewton(UntangleEnergy& energy, double epsilon, int maxIterations, b
     value = trialValue;
   }
   energy.setFreeVariables(x);
+  return {before, value};
 }
 
 }  // namespace
@@ -435,7 +435,6 @@ UntangleOutcome untangle(const Tets& tets, const std::vector<TetElement>& elemen
   auto [minDet, inverted] = energy.determinants();
   Eigen::VectorXd x = energy.freeVariables();
   NewtonSolver solver;
-  bool analysed = false;
   // ε schedule of the paper (Alg. 1): start at the scale of the unit
   // Jacobian, then shrink according to the energy decrease of each round.
   double epsilon = std::min(1.0, kStartEpsilonPerDet * std::abs(minDet));
@@ -444,9 +443,7 @@ UntangleOutcome untangle(const Tets& tets, const std::vector<TetElement>& elemen
   int stagnant = 0;
   while (minDet <= 0.0 && outcome.rounds < maxRounds && stagnant < kStagnantRounds &&
          epsilon >= -kHopelessEpsilon * minDet) {
-    const double before = energy.evaluate(x, epsilon, nullptr);
-    minimiseNewton(energy, epsilon, iterationsPerRound, analysed, solver, x);
-    const double after = energy.evaluate(x, epsilon, nullptr);
+    const EnergyChange change = minimiseNewton(energy, epsilon, iterationsPerRound, solver, x);
     ++outcome.rounds;
     std::tie(minDet, inverted) = energy.determinants();
     if (minDet > bestMinDet || inverted < fewestInverted) {
@@ -456,7 +453,7 @@ UntangleOutcome untangle(const Tets& tets, const std::vector<TetElement>& elemen
     }
     bestMinDet = std::max(bestMinDet, minDet);
     fewestInverted = std::min(fewestInverted, inverted);
-    const double sigma = std::max(1.0 - after / before, kSmallestDecrease);
+    const double sigma = std::max(1.0 - change.after / change.before, kSmallestDecrease);
     const double mu =
         (1.0 - sigma) * 0.5 * (minDet + std::sqrt(epsilon * epsilon + minDet * minDet));
     epsilon = minDet < mu ? 2.0 * std::sqrt(mu * (mu - minDet)) : 1e-13;

@@ -34,10 +34,37 @@ Chi chi(double j, double epsilon) {
   return {value, value / root, 0.5 * epsilon * epsilon / (root * root * root)};
 }
 
-// χ^{-2/3}.
-double chiPower(double chiValue) {
-  return chiValue >= std::numeric_limits<double>::min() ? lane_math::inverseCbrtSquaredLane(chiValue)
-                                                         : std::pow(chiValue, -2.0 / 3.0);
+// f = ψ(s, J) with s = ‖F‖² and its partial derivatives (ψ_ss = 0); the
+// second ones only when asked (the Hessian needs them, the energy does not).
+struct Psi {
+  double value;
+  double s;   // ∂ψ/∂s
+  double j;   // ∂ψ/∂J
+  double sj;  // ∂²ψ/∂s∂J
+  double jj;  // ∂²ψ/∂J²
+};
+
+Psi psi(double s, double j, double epsilon, bool second) {
+  constexpr double a = 1.0 - kUntangleVolumeWeight;
+  constexpr double b = kUntangleVolumeWeight;
+  const Chi c = chi(j, epsilon);
+  const double x = c.value;
+  const double power = x >= std::numeric_limits<double>::min()  // χ^{-2/3}
+                           ? lane_math::inverseCbrtSquaredLane(x)
+                           : std::pow(x, -2.0 / 3.0);
+  Psi result{};
+  result.value = a * s * power + b * (j * j + 1.0) / x;
+  result.s = a * power;
+  result.j = a * s * (-2.0 / 3.0) * power / x * c.first +
+             b * (2.0 * j / x - (j * j + 1.0) * c.first / (x * x));
+  if (second) {
+    result.sj = a * (-2.0 / 3.0) * power / x * c.first;
+    result.jj =
+        a * s * power / x * ((10.0 / 9.0) * c.first * c.first / x - (2.0 / 3.0) * c.second) +
+        b * (2.0 / x - 4.0 * j * c.first / (x * x) - (j * j + 1.0) * c.second / (x * x) +
+             2.0 * (j * j + 1.0) * c.first * c.first / (x * x * x));
+  }
+  return result;
 }
 
 // F = U diag(σ) Vᵀ with U, V rotations and σ_0 >= σ_1 >= |σ_2|, σ_2 of the
@@ -68,19 +95,9 @@ void rotationVariantSvd(const Eigen::Matrix3d& f, Eigen::Matrix3d& u, Eigen::Vec
 }  // namespace
 
 double untangleTetEnergy(const Eigen::Matrix3d& f, double epsilon, Eigen::Matrix3d* dEdF) {
-  constexpr double a = 1.0 - kUntangleVolumeWeight;
-  constexpr double b = kUntangleVolumeWeight;
-  const double j = f.determinant();
-  const Chi c = chi(j, epsilon);
-  const double s = f.squaredNorm();
-  const double power = chiPower(c.value);
-  const double value = a * s * power + b * (j * j + 1.0) / c.value;
-  if (dEdF != nullptr) {
-    const double dJ = a * s * (-2.0 / 3.0) * power / c.value * c.first +
-                      b * (2.0 * j / c.value - (j * j + 1.0) * c.first / (c.value * c.value));
-    *dEdF = 2.0 * a * power * f + dJ * cofactor(f);
-  }
-  return value;
+  const Psi p = psi(f.squaredNorm(), f.determinant(), epsilon, /*second=*/false);
+  if (dEdF != nullptr) *dEdF = 2.0 * p.s * f + p.j * cofactor(f);
+  return p.value;
 }
 
 // f = ψ(I2, I3) with I2 = ‖F‖², I3 = J, so its Hessian has the closed-form
@@ -93,25 +110,15 @@ double untangleTetEnergy(const Eigen::Matrix3d& f, double epsilon, Eigen::Matrix
 // and the three scalings U diag(a) Vᵀ with (λ, a) the eigenpairs of the
 // 3 by 3 Hessian of ψ(Σ σ_i², σ_0 σ_1 σ_2) in σ (ψ_22 = 0 here).
 Matrix9d untangleTetHessian(const Eigen::Matrix3d& f, double epsilon, bool projected) {
-  constexpr double a = 1.0 - kUntangleVolumeWeight;
-  constexpr double b = kUntangleVolumeWeight;
   Eigen::Matrix3d u;
   Eigen::Matrix3d v;
   Eigen::Vector3d sigma;
   rotationVariantSvd(f, u, sigma, v);
-  const double j = sigma.prod();
-  const Chi c = chi(j, epsilon);
-  const double s = sigma.squaredNorm();
-  const double power = chiPower(c.value);  // χ^{-2/3}
-  const double x = c.value;
-  const double psi2 = a * power;
-  const double psi23 = a * (-2.0 / 3.0) * power / x * c.first;
-  const double psi3 = a * s * (-2.0 / 3.0) * power / x * c.first +
-                      b * (2.0 * j / x - (j * j + 1.0) * c.first / (x * x));
-  const double psi33 =
-      a * s * power / x * ((10.0 / 9.0) * c.first * c.first / x - (2.0 / 3.0) * c.second) +
-      b * (2.0 / x - 4.0 * j * c.first / (x * x) - (j * j + 1.0) * c.second / (x * x) +
-           2.0 * (j * j + 1.0) * c.first * c.first / (x * x * x));
+  const Psi p = psi(sigma.squaredNorm(), sigma.prod(), epsilon, /*second=*/true);
+  const double psi2 = p.s;
+  const double psi3 = p.j;
+  const double psi23 = p.sj;
+  const double psi33 = p.jj;
 
   Matrix9d h = Matrix9d::Zero();
   auto add = [&](double lambda, const Eigen::Matrix3d& q) {
