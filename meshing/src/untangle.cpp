@@ -24,7 +24,6 @@ namespace tetblend {
 namespace {
 
 using SparseMatrix = Eigen::SparseMatrix<double>;
-using Matrix12d = Eigen::Matrix<double, 12, 12>;
 
 constexpr double kArmijo = 1e-4;
 constexpr int kMaxHalvings = 40;
@@ -68,9 +67,12 @@ constexpr double kSmallestDecrease = 0.1;
 // factorisation fails.
 constexpr double kRelativeShift = 1e-10;
 constexpr int kShiftAttempts = 6;
-// Unknowns (3 per free vertex) from which NewtonSolver takes CHOLMOD's
-// supernodal factorisation: 2 k free vertices.
-constexpr Eigen::Index kSupernodalUnknowns = 6000;
+// Flops of a simplicial factorisation (Σ_j |L_*j|²) from which NewtonSolver
+// takes CHOLMOD's supernodal one. Measured on the Newton matrices of the
+// hard-pose benchmark and the 48-frame bear rehearsal (3 k to 7 k unknowns,
+// 2e7 to 3e8 flops, one core): the simplicial factorisation was faster up to
+// about 1e8 flops, even at 1e8, and twice as slow at 2.7e8.
+constexpr double kSupernodalFlops = 1.5e8;
 
 class UntangleEnergy {
  public:
@@ -170,9 +172,9 @@ class UntangleEnergy {
                           const TetElement& element = elements_[static_cast<size_t>(t)];
                           const Eigen::Matrix3d f =
                               deformationGradient(positions_, tets_.row(t), element);
-                          tetHessian_[i] = cornerHessian(
-                              untangleTetHessian(f, epsilon, /*projected=*/true), element,
-                              element.volume / totalVolume_);
+                          tetHessian_[i] = (element.volume / totalVolume_) *
+                                           untangleCornerHessian(f, element.gradients, epsilon,
+                                                                 /*projected=*/true);
                         }
                       });
     double* values = hessian_.valuePtr();
@@ -218,27 +220,6 @@ class UntangleEnergy {
                       [&](const tbb::blocked_range<size_t>& range) {
                         for (size_t v = range.begin(); v != range.end(); ++v) body(v);
                       });
-  }
-
-  // The tet's Hessian in its corner positions (12 by 12, corner a at rows
-  // 3a..3a+2) from h = ∂²f/∂vec(F)²: F = X Gᵀ gives ∂vec(F)/∂x_a,k =
-  // G(j, a) at entry k + 3j, so H = Bᵀ h B with that 9 by 12 matrix B.
-  static Matrix12d cornerHessian(const Matrix9d& h, const TetElement& element, double weight) {
-    const Eigen::Matrix<double, 3, 4>& g = element.gradients;
-    Eigen::Matrix<double, 9, 12> hb;
-    for (int a = 0; a < 4; ++a) {
-      for (int k = 0; k < 3; ++k) {
-        hb.col(3 * a + k) = g(0, a) * h.col(k) + g(1, a) * h.col(k + 3) + g(2, a) * h.col(k + 6);
-      }
-    }
-    Matrix12d result;
-    for (int a = 0; a < 4; ++a) {
-      for (int k = 0; k < 3; ++k) {
-        result.row(3 * a + k) =
-            weight * (g(0, a) * hb.row(k) + g(1, a) * hb.row(k + 3) + g(2, a) * hb.row(k + 6));
-      }
-    }
-    return result;
   }
 
   // Energy of active tet i into tetEnergy_[i]; with `wantGradient`, its
@@ -330,28 +311,48 @@ class UntangleEnergy {
   double totalVolume_ = 0.0;
 };
 
+// Eigen's simplicial LLᵀ with the cost of its numeric factorisation,
+// Σ_j |L_*j|² flops over the columns of L (George & Liu 1981), from the
+// column counts of its symbolic analysis.
+class SimplicialSolver : public Eigen::SimplicialLLT<SparseMatrix, Eigen::Lower> {
+ public:
+  double factorisationFlops() const {
+    const int* start = m_matrix.outerIndexPtr();
+    double flops = 0.0;
+    for (Eigen::Index j = 0; j < m_matrix.cols(); ++j) {
+      const double count = start[j + 1] - start[j];
+      flops += count * count;
+    }
+    return flops;
+  }
+};
+
 // Sparse Cholesky factorisation of the Newton matrix, its pattern analysed on
-// the first factorisation (the pattern is fixed per attempt):
-// Eigen's simplicial LLᵀ below kSupernodalUnknowns, CHOLMOD's supernodal
-// LLᵀ (BLAS-3 on dense supernodes) above when tetblend has CHOLMOD. Most
-// attempts free a few hundred vertices, where CHOLMOD's OpenMP and BLAS
-// thread teams cost more than the factorisation: with CHOLMOD for every size
-// the 48-frame homer rehearsal spent 42 s of its 83 s in the kernel (threads
-// waiting), with the simplicial factorisation 1 s of 64 s.
+// the first factorisation (the pattern is fixed per attempt): Eigen's
+// simplicial LLᵀ, or CHOLMOD's supernodal LLᵀ (BLAS-3 on dense supernodes)
+// when the simplicial one would take more than kSupernodalFlops and tetblend
+// has CHOLMOD. Most attempts free a few hundred vertices, where CHOLMOD's
+// OpenMP and BLAS thread teams cost more than the factorisation: with
+// CHOLMOD for every size the 48-frame homer rehearsal spent 42 s of its 83 s
+// in the kernel (threads waiting), with the simplicial factorisation 1 s of
+// 64 s.
 class NewtonSolver {
  public:
   bool factorize(const SparseMatrix& matrix) {
+    if (!analysed_) {
+      simplicialSolver_.analyzePattern(matrix);
 #ifdef TETBLEND_HAVE_CHOLMOD
-    if (!analysed_) supernodal_ = matrix.rows() >= kSupernodalUnknowns;
-    if (supernodal_) {
-      if (!analysed_) supernodalSolver_.analyzePattern(matrix);
+      supernodal_ = simplicialSolver_.factorisationFlops() >= kSupernodalFlops;
+      if (supernodal_) supernodalSolver_.analyzePattern(matrix);
+#endif
       analysed_ = true;
+    }
+#ifdef TETBLEND_HAVE_CHOLMOD
+    if (supernodal_) {
       supernodalSolver_.factorize(matrix);
       return supernodalSolver_.info() == Eigen::Success;
     }
 #endif
-    if (!analysed_) simplicialSolver_.analyzePattern(matrix);
-    analysed_ = true;
     simplicialSolver_.factorize(matrix);
     return simplicialSolver_.info() == Eigen::Success;
   }
@@ -365,7 +366,7 @@ class NewtonSolver {
 
  private:
   bool analysed_ = false;
-  Eigen::SimplicialLLT<SparseMatrix, Eigen::Lower> simplicialSolver_;
+  SimplicialSolver simplicialSolver_;
 #ifdef TETBLEND_HAVE_CHOLMOD
   Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower> supernodalSolver_;
   bool supernodal_ = false;

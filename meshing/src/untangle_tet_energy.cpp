@@ -3,6 +3,7 @@
 #include <cmath>
 #include <limits>
 
+#include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
 #include <Eigen/LU>
@@ -100,55 +101,64 @@ double untangleTetEnergy(const Eigen::Matrix3d& f, double epsilon, Eigen::Matrix
   return p.value;
 }
 
-// f = ψ(I2, I3) with I2 = ‖F‖², I3 = J, so its Hessian has the closed-form
-// eigensystem of Smith, de Goes & Kim, "Analytic eigensystems for isotropic
-// distortion energies" (ACM TOG 38(1), 2019, sec. 4-5): with the
+// f = ψ(I2, I3) with I2 = ‖F‖², I3 = J, so its Hessian in F has the
+// closed-form eigensystem of Smith, de Goes & Kim, "Analytic eigensystems for
+// isotropic distortion energies" (ACM TOG 38(1), 2019, sec. 4-5): with the
 // rotation-variant SVD F = U diag(σ) Vᵀ (U, V rotations, σ_3 carrying the
 // sign of J) and (i, j, k) a permutation of (0, 1, 2),
 //   twist U (e_i e_jᵀ − e_j e_iᵀ) Vᵀ / √2: λ = 2 ψ_2 + ψ_3 σ_k,
 //   flip  U (e_i e_jᵀ + e_j e_iᵀ) Vᵀ / √2: λ = 2 ψ_2 − ψ_3 σ_k,
-// and the three scalings U diag(a) Vᵀ with (λ, a) the eigenpairs of the
-// 3 by 3 Hessian of ψ(Σ σ_i², σ_0 σ_1 σ_2) in σ (ψ_22 = 0 here).
-Matrix9d untangleTetHessian(const Eigen::Matrix3d& f, double epsilon, bool projected) {
+// and the scalings U diag(a) Vᵀ, whose block in the basis U e_i e_iᵀ Vᵀ is S,
+// the 3 by 3 Hessian of ψ(Σ σ_i², σ_0 σ_1 σ_2) in σ (ψ_22 = 0 here). An
+// eigenvector Q maps to the corners as Q G, so U M Vᵀ G = U M P with
+// P = Vᵀ G: the corner Hessian is Σ λ vec(Q G) vec(Q G)ᵀ, built in 12
+// dimensions without forming the 9 by 9 one. S is projected through its own
+// eigendecomposition only when it is not positive definite.
+Matrix12d untangleCornerHessian(const Eigen::Matrix3d& f, const Eigen::Matrix<double, 3, 4>& g,
+                                double epsilon, bool projected) {
+  using CornerMatrix = Eigen::Matrix<double, 3, 4>;
   Eigen::Matrix3d u;
   Eigen::Matrix3d v;
   Eigen::Vector3d sigma;
   rotationVariantSvd(f, u, sigma, v);
   const Psi p = psi(sigma.squaredNorm(), sigma.prod(), epsilon, /*second=*/true);
-  const double psi2 = p.s;
-  const double psi3 = p.j;
-  const double psi23 = p.sj;
-  const double psi33 = p.jj;
+  const CornerMatrix pv = v.transpose() * g;
 
-  Matrix9d h = Matrix9d::Zero();
-  auto add = [&](double lambda, const Eigen::Matrix3d& q) {
+  Matrix12d h;
+  auto add = [&](double lambda, const CornerMatrix& w) {  // w = Q G
     if (projected && lambda <= 0.0) return;
-    const Eigen::Map<const Eigen::Matrix<double, 9, 1>> vecQ(q.data());
-    h.noalias() += lambda * vecQ * vecQ.transpose();
+    const Eigen::Map<const Eigen::Matrix<double, 12, 1>> vecW(w.data());
+    h.noalias() += lambda * vecW * vecW.transpose();
   };
+  Eigen::Matrix3d scaling;  // S
+  Eigen::Matrix<double, 12, 3> diagonalBasis;  // vec(U e_i e_iᵀ Vᵀ G) = vec(u_i p_iᵀ)
+  for (int i = 0; i < 3; ++i) {
+    const CornerMatrix w = u.col(i) * pv.row(i);
+    diagonalBasis.col(i) = Eigen::Map<const Eigen::Matrix<double, 12, 1>>(w.data());
+    const double product = sigma((i + 1) % 3) * sigma((i + 2) % 3);  // ∂I3/∂σ_i
+    for (int l = 0; l <= i; ++l) {
+      const double otherProduct = sigma((l + 1) % 3) * sigma((l + 2) % 3);
+      scaling(i, l) = 2.0 * p.sj * (sigma(i) * otherProduct + product * sigma(l)) +
+                      p.jj * product * otherProduct +
+                      (l == i ? 2.0 * p.s : p.j * sigma(3 - i - l));
+      scaling(l, i) = scaling(i, l);
+    }
+  }
+  if (projected && Eigen::LLT<Eigen::Matrix3d>(scaling).info() != Eigen::Success) {
+    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(scaling);
+    scaling = eigen.eigenvectors() * eigen.eigenvalues().cwiseMax(0.0).asDiagonal() *
+              eigen.eigenvectors().transpose();
+  }
+  const Eigen::Matrix<double, 12, 3> scaled = diagonalBasis * scaling;
+  h.noalias() = scaled.lazyProduct(diagonalBasis.transpose());  // no GEMM kernel for 12×3×12
   const double halfRoot2 = std::sqrt(0.5);
   for (int k = 0; k < 3; ++k) {
     const int i = (k + 1) % 3;
     const int l = (k + 2) % 3;
-    const Eigen::Matrix3d outer = u.col(i) * v.col(l).transpose();
-    const Eigen::Matrix3d inner = u.col(l) * v.col(i).transpose();
-    add(2.0 * psi2 + psi3 * sigma(k), halfRoot2 * (outer - inner));
-    add(2.0 * psi2 - psi3 * sigma(k), halfRoot2 * (outer + inner));
-  }
-  Eigen::Vector3d products;  // ∂I3/∂σ_i
-  for (int i = 0; i < 3; ++i) products(i) = sigma((i + 1) % 3) * sigma((i + 2) % 3);
-  Eigen::Matrix3d scaling = 2.0 * psi23 * (sigma * products.transpose() + products * sigma.transpose()) +
-                            psi33 * products * products.transpose();
-  for (int i = 0; i < 3; ++i) {
-    scaling(i, i) += 2.0 * psi2;
-    for (int l = 0; l < 3; ++l) {
-      if (l != i) scaling(i, l) += psi3 * sigma(3 - i - l);
-    }
-  }
-  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> scalings(scaling);
-  for (int m = 0; m < 3; ++m) {
-    add(scalings.eigenvalues()(m),
-        u * scalings.eigenvectors().col(m).asDiagonal() * v.transpose());
+    const CornerMatrix outer = halfRoot2 * u.col(i) * pv.row(l);
+    const CornerMatrix inner = halfRoot2 * u.col(l) * pv.row(i);
+    add(2.0 * p.s + p.j * sigma(k), outer - inner);
+    add(2.0 * p.s - p.j * sigma(k), outer + inner);
   }
   return h;
 }

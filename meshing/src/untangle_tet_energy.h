@@ -10,7 +10,7 @@
 
 namespace tetblend {
 
-using Matrix9d = Eigen::Matrix<double, 9, 9>;
+using Matrix12d = Eigen::Matrix<double, 12, 12>;
 
 /// θ, the weight of the volume term (the paper's choice in 3D).
 constexpr double kUntangleVolumeWeight = 0.5;
@@ -19,10 +19,15 @@ constexpr double kUntangleVolumeWeight = 0.5;
 /// F and ε > 0 (χ is evaluated in its cancellation-free form for J <= 0).
 double untangleTetEnergy(const Eigen::Matrix3d& f, double epsilon, Eigen::Matrix3d* dEdF);
 
-/// ∂²f_ε/∂vec(F)² from its closed-form eigensystem; with `projected`, the
-/// eigenvalues below 0 are dropped: the nearest positive semi-definite
-/// matrix in the Frobenius norm (projected Newton, Teran, Sifakis, Irving &
-/// Fedkiw 2005).
-Matrix9d untangleTetHessian(const Eigen::Matrix3d& f, double epsilon, bool projected);
+/// The Hessian of f_ε(X Gᵀ) with respect to the tet's corner positions X
+/// (3 by 4; entry 3a + k is coordinate k of corner a) for the barycentric
+/// gradients G (3 by 4), from the closed-form eigensystem of ∂²f_ε/∂vec(F)²;
+/// with `projected`, its eigenvalues below 0 are dropped first: the nearest
+/// positive semi-definite matrix in F in the Frobenius norm (projected
+/// Newton, Teran, Sifakis, Irving & Fedkiw 2005). For the unit corner tet,
+/// G = [-1 1 0 0; -1 0 1 0; -1 0 0 1], its lower-right 9 by 9 block is the
+/// Hessian in vec(F).
+Matrix12d untangleCornerHessian(const Eigen::Matrix3d& f, const Eigen::Matrix<double, 3, 4>& g,
+                                double epsilon, bool projected);
 
 }  // namespace tetblend

@@ -1,8 +1,10 @@
-// The untangler's per-tet energy (Garanzha et al. 2021) and its Hessian from
-// the closed-form eigensystem (Smith, de Goes & Kim 2019), against
-// independent oracles: central differences of the energy and of the
-// gradient, and a numerical eigendecomposition of the 9 by 9 Hessian for the
-// projection. Covered: both branches of χ (J > 0, J <= 0, J = 0), repeated
+// The untangler's per-tet energy (Garanzha et al. 2021) and its corner
+// Hessian from the closed-form eigensystem (Smith, de Goes & Kim 2019),
+// against independent oracles: central differences of the energy and of the
+// gradient (in F, and in the corners of a random tet), and a numerical
+// eigendecomposition of the 9 by 9 Hessian in F for the projection. The
+// Hessian in F is the corner Hessian of the unit corner tet, whose corners
+// 1..3 move F's columns one to one. Covered: both branches of χ (J > 0, J <= 0, J = 0), repeated
 // singular values, and both eigenvalue paths of the SVD (closed form, Jacobi near rank 1).
 
 #include <gtest/gtest.h>
@@ -83,6 +85,20 @@ std::string describe(const Eigen::Matrix3d& f, double epsilon) {
   return out.str();
 }
 
+// Barycentric gradients of the unit corner tet (0, e_0, e_1, e_2): F's
+// column j is corner j + 1 minus corner 0.
+Eigen::Matrix<double, 3, 4> unitCornerGradients() {
+  Eigen::Matrix<double, 3, 4> g;
+  g << -1, 1, 0, 0, -1, 0, 1, 0, -1, 0, 0, 1;
+  return g;
+}
+
+using Matrix9d = Eigen::Matrix<double, 9, 9>;
+
+Matrix9d hessianInF(const Eigen::Matrix3d& f, double epsilon, bool projected) {
+  return untangleCornerHessian(f, unitCornerGradients(), epsilon, projected).bottomRightCorner<9, 9>();
+}
+
 Eigen::Matrix3d gradientOf(const Eigen::Matrix3d& f, double epsilon) {
   Eigen::Matrix3d gradient;
   untangleTetEnergy(f, epsilon, &gradient);
@@ -118,7 +134,7 @@ TEST(UntangleTetEnergy, HessianMatchesCentralDifferencesOfTheGradient) {
   for (const Eigen::Matrix3d& f : sampleGradients(rng)) {
     for (double epsilon : {1.0, 0.1, 1e-2}) {
       const double h = differenceStep(f, epsilon);
-      const Matrix9d analytic = untangleTetHessian(f, epsilon, /*projected=*/false);
+      const Matrix9d analytic = hessianInF(f, epsilon, /*projected=*/false);
       Matrix9d numeric;
       for (int i = 0; i < 9; ++i) {
         Eigen::Matrix3d plus = f;
@@ -136,18 +152,60 @@ TEST(UntangleTetEnergy, HessianMatchesCentralDifferencesOfTheGradient) {
   }
 }
 
+// The corner Hessian of a random tet against central differences of the
+// corner gradient ∂f/∂X = (∂f/∂F) G, and its projection against Bᵀ h⁺ B,
+// with B = ∂vec(F)/∂X built here and h⁺ the projected Hessian in F.
+TEST(UntangleTetEnergy, CornerHessianOfARandomTetIsTheChainRule) {
+  std::mt19937 rng(testSeed());
+  for (const Eigen::Matrix3d& f : sampleGradients(rng)) {
+    Eigen::Matrix3d edges;  // a random rest tet, corner 0 at the origin
+    do {
+      for (int i = 0; i < 9; ++i) edges(i) = test_seed::uniform(rng, -1.0, 1.0);
+    } while (std::abs(edges.determinant()) < 0.1);
+    Eigen::Matrix<double, 3, 4> g;
+    g.rightCols<3>() = edges.inverse();  // rows of E⁻¹: gradients of corners 1..3
+    g.col(0) = -g.rightCols<3>().rowwise().sum();
+    for (double epsilon : {1.0, 1e-2}) {
+      Eigen::Matrix<double, 9, 12> chain;  // ∂vec(F)/∂X: entry (k + 3j, 3a + k) = G(j, a)
+      chain.setZero();
+      for (int a = 0; a < 4; ++a) {
+        for (int j = 0; j < 3; ++j) {
+          for (int k = 0; k < 3; ++k) chain(k + 3 * j, 3 * a + k) = g(j, a);
+        }
+      }
+      const double h = differenceStep(f, epsilon) / std::max(1.0, chain.norm());
+      const Matrix12d analytic = untangleCornerHessian(f, g, epsilon, /*projected=*/false);
+      Matrix12d numeric;
+      for (int c = 0; c < 12; ++c) {
+        const Eigen::Matrix3d step = h * (chain.col(c).reshaped(3, 3));
+        const Eigen::Matrix<double, 3, 4> difference =
+            (gradientOf(f + step, epsilon) - gradientOf(f - step, epsilon)) * g / (2.0 * h);
+        numeric.col(c) = difference.reshaped();
+      }
+      EXPECT_LE((analytic - numeric).cwiseAbs().maxCoeff(),
+                kDifferenceTolerance * (analytic.cwiseAbs().maxCoeff() +
+                                        (gradientOf(f, epsilon) * g).cwiseAbs().maxCoeff()))
+          << describe(f, epsilon);
+      const Matrix12d viaF = chain.transpose() * hessianInF(f, epsilon, true) * chain;
+      EXPECT_LE((untangleCornerHessian(f, g, epsilon, true) - viaF).cwiseAbs().maxCoeff(),
+                kProjectionTolerance * viaF.cwiseAbs().maxCoeff())
+          << describe(f, epsilon);
+    }
+  }
+}
+
 TEST(UntangleTetEnergy, ProjectedHessianDropsExactlyTheNegativeEigenvalues) {
   std::mt19937 rng(testSeed());
   int indefinite = 0;
   for (const Eigen::Matrix3d& f : sampleGradients(rng)) {
     for (double epsilon : {1.0, 1e-2, 1e-6}) {
-      const Matrix9d exact = untangleTetHessian(f, epsilon, /*projected=*/false);
+      const Matrix9d exact = hessianInF(f, epsilon, /*projected=*/false);
       const Eigen::SelfAdjointEigenSolver<Matrix9d> eigen(exact);
       if (eigen.eigenvalues().minCoeff() < 0.0) ++indefinite;
       const Matrix9d oracle = eigen.eigenvectors() *
                               eigen.eigenvalues().cwiseMax(0.0).asDiagonal() *
                               eigen.eigenvectors().transpose();
-      const Matrix9d projected = untangleTetHessian(f, epsilon, /*projected=*/true);
+      const Matrix9d projected = hessianInF(f, epsilon, /*projected=*/true);
       EXPECT_LE((projected - oracle).cwiseAbs().maxCoeff(),
                 kProjectionTolerance * exact.cwiseAbs().maxCoeff())
           << describe(f, epsilon);
