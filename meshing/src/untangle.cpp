@@ -160,8 +160,9 @@ class UntangleEnergy {
   }
 
   // The Hessian of the energy at the current positions with every tet's
-  // part projected to positive semi-definite (projected Newton), as the full
-  // symmetric 3#free by 3#free matrix on the pattern of buildNewtonPattern.
+  // part projected to positive semi-definite (projected Newton), as the lower
+  // triangle of the 3#free by 3#free matrix on the pattern of
+  // buildNewtonPattern.
   // Gathered per free vertex column in tet order: deterministic.
   SparseMatrix& projectedHessian(double epsilon) {
     tetHessian_.resize(active_.size());
@@ -234,9 +235,12 @@ class UntangleEnergy {
     if (wantGradient) tetGradient_[i] = weight * dEdF * element.gradients;
   }
 
-  // The pattern of the Newton matrix: a 3 by 3 block (r, c) for every pair
-  // of free vertices sharing an active tet, both triangles stored, the rows
-  // of each column block sorted (blockRows_ from blockStart_[c]).
+  // The pattern of the Newton matrix: a 3 by 3 block (r, c) with r >= c for
+  // every pair of free vertices sharing an active tet, the rows of each
+  // column block sorted (blockRows_ from blockStart_[c]). Only the lower
+  // triangle is read by the factorisations (the upper entries of diagonal
+  // blocks are stored and ignored), so the upper blocks are left out: half
+  // the assembly.
   void buildNewtonPattern() {
     const size_t count = freeVertices_.size();
     blockStart_.assign(count + 1, 0);
@@ -246,7 +250,7 @@ class UntangleEnergy {
         const int t = active_[corners_[static_cast<size_t>(k)].activeTet];
         for (int q = 0; q < 4; ++q) {
           const int row = variable_[static_cast<size_t>(tets_(t, q))];
-          if (row >= 0) rows[c].push_back(row);
+          if (row >= static_cast<int>(c)) rows[c].push_back(row);
         }
       }
       std::sort(rows[c].begin(), rows[c].end());
@@ -280,7 +284,8 @@ class UntangleEnergy {
         for (int q = 0; q < 4; ++q) {
           const int row = variable_[static_cast<size_t>(tets_(t, q))];
           blockPosition_[static_cast<size_t>(k)][static_cast<size_t>(q)] =
-              row < 0 ? -1 : static_cast<int>(std::lower_bound(first, last, row) - first);
+              row < static_cast<int>(c) ? -1
+                                        : static_cast<int>(std::lower_bound(first, last, row) - first);
         }
       }
     }
