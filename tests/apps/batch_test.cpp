@@ -26,7 +26,6 @@ namespace tetblend::apps_test {
 namespace {
 
 using nlohmann::json;
-constexpr double kInterpolationTolerance = 1e-7 * 4.1;  // as in blend_test.cpp
 
 /// Rows of RFC 4180 CSV text: fields split at commas outside double quotes, a
 /// quoted field's "" read as one quote, rows ended by LF or CRLF outside quotes.

@@ -6,11 +6,6 @@
 namespace tetblend::apps_test {
 namespace {
 
-// Interpolation holds to round-off of the stitch solve (a sparse Cholesky of a
-// Laplacian with condition ~1e4 on this mesh): 1e-7 of the bar's size (the
-// bounding-box diagonal is ~4.1) leaves two orders of margin.
-constexpr double kInterpolationTolerance = 1e-7 * 4.1;
-
 class BlendCommand : public ::testing::Test {
  protected:
   void SetUp() override {

@@ -6,7 +6,6 @@
 namespace tetblend::apps_test {
 namespace {
 
-constexpr double kInterpolationTolerance = 1e-7 * 4.1;  // as in blend_test.cpp
 // Different seeds give different weights: shapes differ by a fair fraction of
 // the bar (size ~4), 1e-3 is far above any round-off.
 constexpr double kDifferentSeedsGap = 1e-3;
