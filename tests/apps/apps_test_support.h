@@ -30,6 +30,18 @@ namespace tetblend::apps_test {
 
 namespace fs = std::filesystem;
 
+// Interpolation holds to round-off of the stitch solve (a sparse Cholesky of a
+// Laplacian with condition ~1e4 on the prepared bar): 1e-7 of the bar's size
+// (the bounding-box diagonal is ~4.1) leaves two orders of margin.
+constexpr double kInterpolationTolerance = 1e-7 * 4.1;
+// The rest's per-tet quality (volume ratio 1, distortion 1, rotation angle 0):
+// functions of each tet's gradient, which the rest's reproduction error moves
+// by about that error over the tet's edge length. With the stitch at
+// round-off (~cond * eps = 2e-12 of the size) that is far below 1e-6; 1e-6
+// caps these O(1) quantities absolutely and is not derived from
+// kInterpolationTolerance.
+constexpr double kRestQualityTolerance = 1e-6;
+
 struct RunResult {
   int code = -1;
   std::string out;

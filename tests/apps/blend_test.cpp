@@ -6,11 +6,6 @@
 namespace tetblend::apps_test {
 namespace {
 
-// Interpolation holds to round-off of the stitch solve (a sparse Cholesky of a
-// Laplacian with condition ~1e4 on this mesh): 1e-7 of the bar's size (the
-// bounding-box diagonal is ~4.1) leaves two orders of margin.
-constexpr double kInterpolationTolerance = 1e-7 * 4.1;
-
 class BlendCommand : public ::testing::Test {
  protected:
   void SetUp() override {
@@ -53,14 +48,15 @@ TEST_F(BlendCommand, ZeroWeightsGiveTheRestWithQualityArrays) {
   }
   vtkDataArray* ratio = vtu->GetCellData()->GetArray("volume_ratio");
   for (vtkIdType j = 0; j < ratio->GetNumberOfTuples(); ++j) {
-    ASSERT_NEAR(ratio->GetTuple1(j), 1.0, 1e-6) << "tet " << j;  // the rest keeps volumes
+    // The rest keeps volumes.
+    ASSERT_NEAR(ratio->GetTuple1(j), 1.0, kRestQualityTolerance) << "tet " << j;
   }
   // The rest is the identity map of every tet: no distortion, no rotation.
   vtkDataArray* distortion = vtu->GetCellData()->GetArray("distortion");
   vtkDataArray* angle = vtu->GetCellData()->GetArray("rotation_angle");
   for (vtkIdType j = 0; j < distortion->GetNumberOfTuples(); ++j) {
-    ASSERT_NEAR(distortion->GetTuple1(j), 1.0, 1e-6) << "tet " << j;
-    ASSERT_NEAR(angle->GetTuple1(j), 0.0, 1e-6) << "tet " << j;
+    ASSERT_NEAR(distortion->GetTuple1(j), 1.0, kRestQualityTolerance) << "tet " << j;
+    ASSERT_NEAR(angle->GetTuple1(j), 0.0, kRestQualityTolerance) << "tet " << j;
   }
   for (vtkIdType i = 0; i < displacement->GetNumberOfTuples(); ++i)
     for (int c = 0; c < 3; ++c)

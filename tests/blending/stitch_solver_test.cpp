@@ -18,6 +18,24 @@ namespace {
 // reproduces it to round-off amplified by the stitch matrix's condition
 // number (~1e3 for these grids): 1e-10 of the bounding-box diagonal.
 constexpr double kExactRelative = 1e-10;
+// The stitch energy of that reproduction, sum of vol |G x - F|^2 (total
+// volume 2.4): with gradients off by round-off (~cond * eps ~ 1e-13) it is
+// ~1e-26; 1e-20 asks for gradient residuals below ~1e-10, which is tighter
+// than kExactRelative's positions alone would imply.
+constexpr double kExactEnergy = 1e-20;
+// Random N(0, 1) targets are far from compatible: the minimum stitch energy
+// is O(1) (total volume 1, 9 entries per target); 1e-3 tells it from a
+// spuriously zero energy.
+constexpr double kIncompatibleEnergy = 1e-3;
+// E(x* + h d) - E(x*) against E(x* - h d) - E(x*): at the minimiser they
+// differ only by the solve's residual gradient (2 h g.d, |g| ~ cond * eps
+// relative) and the rounding of differences of O(1) energies: relative to
+// up + down, plus an absolute floor of a few hundred ulps of those energies.
+constexpr double kSymmetryRelative = 1e-9;
+constexpr double kSymmetryAbsolute = 1e-13;
+// The two backends factor the same Laplacian (supernodal vs simplicial LDLT):
+// each solve is within ~cond * eps ~ 1e-13 of the exact positions (unit box).
+constexpr double kBackendAgreement = 1e-12;
 
 double maxRowDistance(const Vertices& a, const Vertices& b) {
   return (a - b).rowwise().norm().maxCoeff();
@@ -50,7 +68,7 @@ TEST_P(StitchBackends, CompatibleTargetFieldIsReproducedExactly) {
   const auto gradients = deformationGradients(rest, solver.restData(), target, 0);
   const Vertices solved = solver.solve(gradients, solver.componentCentroids(target));
   EXPECT_LT(maxRowDistance(solved, target), kExactRelative * boundingBoxDiagonal(target));
-  EXPECT_LT(solver.energy(solved, gradients), 1e-20);
+  EXPECT_LT(solver.energy(solved, gradients), kExactEnergy);
 }
 
 TEST_P(StitchBackends, EveryComponentIsAnchoredAtItsCentroid) {
@@ -93,7 +111,7 @@ TEST_P(StitchBackends, SolutionIsTheLeastSquaresMinimiser) {
   for (auto& t : targets) t = Eigen::Matrix3d::NullaryExpr([&] { return normal(rng); });
   const Vertices solved = solver.solve(targets, solver.componentCentroids(rest.vertices));
   const double best = solver.energy(solved, targets);
-  EXPECT_GT(best, 1e-3);
+  EXPECT_GT(best, kIncompatibleEnergy);
   // E is quadratic: E(x + h d) - E(x) = h^2 d^T A d >= 0 at the minimiser,
   // and a first-order term would show as an asymmetry between +h and -h.
   constexpr double kStep = 1e-3;
@@ -104,7 +122,7 @@ TEST_P(StitchBackends, SolutionIsTheLeastSquaresMinimiser) {
     const double down = solver.energy(solved - kStep * direction, targets) - best;
     EXPECT_GE(up, 0.0);
     EXPECT_GE(down, 0.0);
-    EXPECT_NEAR(up, down, 1e-9 * (up + down) + 1e-13);
+    EXPECT_NEAR(up, down, kSymmetryRelative * (up + down) + kSymmetryAbsolute);
   }
 }
 
@@ -124,7 +142,7 @@ TEST(StitchSolver, BackendsAgree) {
     targets[j] = Eigen::AngleAxisd(0.01 * j, Eigen::Vector3d::UnitZ()).toRotationMatrix();
   }
   const Centroids c = a.componentCentroids(rest.vertices);
-  EXPECT_LT(maxRowDistance(a.solve(targets, c), b.solve(targets, c)), 1e-12);
+  EXPECT_LT(maxRowDistance(a.solve(targets, c), b.solve(targets, c)), kBackendAgreement);
 }
 
 // The supernodal solve splits dense triangles of at least 512 columns into

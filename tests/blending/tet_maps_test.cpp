@@ -13,6 +13,9 @@ namespace {
 // F_j is computed from one inverse; the oracle solves the 4x4 homogeneous
 // system independently. Both are O(cond * eps) on unit-scale tets.
 constexpr double kMapTolerance = 1e-12;
+// Rest volumes against tetSignedVolume on the same vertices: a determinant of
+// edges < 1 over 6, a few ulps of volumes ~0.02 (~1e-17 each).
+constexpr double kVolumeTolerance = 1e-15;
 
 TEST(TetMaps, GradientsMatchTheHomogeneousAffineMap) {
   const unsigned seed = testing::testSeed();
@@ -26,7 +29,8 @@ TEST(TetMaps, GradientsMatchTheHomogeneousAffineMap) {
   for (Eigen::Index j = 0; j < rest.tets.rows(); ++j) {
     const Eigen::Matrix4d map = tetAffineMap(rest.vertices, example, rest.tets.row(j));
     EXPECT_LT((gradients[j] - map.topLeftCorner<3, 3>()).norm(), kMapTolerance) << "tet " << j;
-    EXPECT_NEAR(data.volumes[j], tetSignedVolume(rest.vertices, rest.tets.row(j)), 1e-15);
+    EXPECT_NEAR(data.volumes[j], tetSignedVolume(rest.vertices, rest.tets.row(j)),
+                kVolumeTolerance);
   }
 }
 

@@ -26,6 +26,16 @@ using core_test::uniform;
 // Polar decompositions, quaternion conversions and Eigen's matrix exp/log of
 // unit-scale maps: round-off of a few hundred ulps at most.
 constexpr double kTol = 1e-11;
+// A two-term weighted sum of 4x4 matrices against the same sum written out:
+// two products and one addition per entry, each rounded by at most half an
+// ulp; 1e-15 (~4.5 eps) per unit of the result's norm, times 4 at the check.
+constexpr double kWeightedSumUlps = 1e-15;
+// +90 and -90 degree turns averaged: cos(pi/2) rounds to 6.1e-17, so the
+// linear part is diag(6.1e-17, 6.1e-17, 1) and its determinant ~4e-33.
+constexpr double kSingularDeterminant = 1e-15;
+// Eigen's matrix log of a turn within 1e-6 of pi: the angle is conditioned
+// like 1/(pi - angle), ~eps * 1e6 = 2e-10 here.
+constexpr double kNearHalfTurnAngle = 1e-9;
 
 using Blend =
     std::function<Eigen::Matrix4d(const std::vector<double>&, const std::vector<Eigen::Matrix4d>&)>;
@@ -98,13 +108,13 @@ TEST(Baselines, LinearBlendIsTheWeightedSumAndCollapsesOpposedTurns) {
   std::mt19937 rng(testSeed("Baselines.LinearBlend"));
   const std::vector<Eigen::Matrix4d> maps = {randomAffine(rng), randomAffine(rng)};
   const Eigen::Matrix4d b = linearMatrixBlend({0.25, 0.75}, maps);
-  EXPECT_LE((b - (0.25 * maps[0] + 0.75 * maps[1])).norm(), 1e-15 * b.norm() * 4);
+  EXPECT_LE((b - (0.25 * maps[0] + 0.75 * maps[1])).norm(), kWeightedSumUlps * b.norm() * 4);
   // Documented failure mode: +90 and -90 degrees about z average to a
   // singular map.
   const Eigen::Matrix4d c =
       linearMatrixBlend({0.5, 0.5}, {zRotation(kPi / 2), zRotation(-kPi / 2)});
   const double det = c.topLeftCorner<3, 3>().determinant();
-  EXPECT_NEAR(det, 0.0, 1e-15);
+  EXPECT_NEAR(det, 0.0, kSingularDeterminant);
 }
 
 TEST(Baselines, AlexaIsTheGeometricMeanOfCommutingStretches) {
@@ -176,7 +186,7 @@ TEST(Baselines, AlexaReportsMapsWithoutRealLogarithm) {
   // Outside the band the log exists and the coaxial blend is exact.
   for (double angle : {kPi - 1e-6, kPi - 1e-3}) {
     const Eigen::Matrix4d m = alexaBlend({0.5, 0.5}, {id, zRotation(angle)});
-    EXPECT_NEAR(zAngle(m), angle / 2, 1e-9) << angle;
+    EXPECT_NEAR(zAngle(m), angle / 2, kNearHalfTurnAngle) << angle;
   }
 }
 

@@ -22,6 +22,16 @@ using core_test::uniform;
 // for the oracle comparisons (scaling and squaring loses ~eps per squaring).
 constexpr double kRoundTripTol = 2e-15;
 constexpr double kOracleTolPerRadian = 2e-15;
+// The closest log of a turn by 4 pi - 1e-3: sin/cos of a 12.6 rad angle
+// (ulp 1.8e-15) and the 2 pi k shift back, a few tens of ulps of 12.6.
+constexpr double kFourPiTwistTol = 1e-13;
+// Distances from references up to 15 rad to logs up to ~20 rad long: each
+// log off by ~kOracleTolPerRadian per radian, the brute-force oracle's
+// (theta + 2 pi k) a rounded to ulps of ~20: ~1e-13.
+constexpr double kClosestDistanceTol = 1e-12;
+// exp of the closest log against exp of w: entries of rotations (<= 1) from
+// sin/cos of angles up to ~20 rad (ulp 3.6e-15), a few ulps each.
+constexpr double kSameRotationTol = 1e-13;
 
 // Hard angles: identity, tiny, both sides of the series switch, both sides of
 // the axis-from-symmetric switch (pi/2), near and exactly pi, large.
@@ -117,7 +127,7 @@ TEST(So3, LogClosestRecoversFourPiTwist) {
     ASSERT_LE((closest - w).norm(), 20 * kRoundTripTol * angle) << w.transpose();
   }
   const Eigen::Vector3d fourPi = (4.0 * kPi - 1e-3) * Eigen::Vector3d(0, 0, 1);
-  EXPECT_NEAR(so3LogClosest(so3Exp(fourPi), fourPi).norm(), 4.0 * kPi - 1e-3, 1e-13);
+  EXPECT_NEAR(so3LogClosest(so3Exp(fourPi), fourPi).norm(), 4.0 * kPi - 1e-3, kFourPiTwistTol);
 }
 
 TEST(So3, LogClosestIsTheClosestLog) {
@@ -132,8 +142,8 @@ TEST(So3, LogClosestIsTheClosestLog) {
       best = std::min(best, (reference - (w.norm() + 2 * kPi * k) * axis).norm());
     }
     const Eigen::Vector3d closest = so3LogClosest(so3Exp(w), reference);
-    ASSERT_NEAR((reference - closest).norm(), best, 1e-12);
-    ASSERT_LE((so3Exp(closest) - so3Exp(w)).norm(), 1e-13);
+    ASSERT_NEAR((reference - closest).norm(), best, kClosestDistanceTol);
+    ASSERT_LE((so3Exp(closest) - so3Exp(w)).norm(), kSameRotationTol);
   }
 }
 

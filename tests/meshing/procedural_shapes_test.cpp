@@ -23,6 +23,17 @@ namespace {
 // Volumes and positions are sums of O(#T) unit-scale products: 1e-12 relative
 // is ~1e4 ε, generous for meshes of a few thousand tets.
 constexpr double kRelativeTolerance = 1e-12;
+// Closed-form per-vertex maps (twist, bend, skinning: sin/cos of angles up to
+// 4 pi and a few products) on coordinates of size <= 4, against the same
+// formulas written out: a few ulps of ulp(4 pi) = 1.8e-15; absolute, and
+// relative where isApprox compares whole points.
+constexpr double kVertexMapTolerance = 1e-12;
+// Grid vertices on a boundary plane, or cylinder vertices on the rim, are
+// computed as i * h - size / 2 or r (cos, sin): within a few ulps of the
+// boundary; the others are at least a cell (>= 0.1 here) away.
+constexpr double kOnBoundary = 1e-12;
+// Two-bone weights are 1 - w and w: their sum is 1 to within two roundings.
+constexpr double kPartitionOfUnity = 1e-15;
 
 unsigned testSeed() { return test_seed::seedOfCurrentTest(20240611u); }
 
@@ -92,9 +103,9 @@ TEST(ProceduralShapes, BoxIsConformingPositiveWithAnalyticVolume) {
   EXPECT_NEAR(totalVolume(mesh), size.prod(), kRelativeTolerance * size.prod());
   const Eigen::Vector3d half = size / 2.0;
   expectConforming(mesh, [&](const Eigen::Vector3d& p) {
-    return ((p.cwiseAbs() - half).cwiseAbs().array() < 1e-12).any();
+    return ((p.cwiseAbs() - half).cwiseAbs().array() < kOnBoundary).any();
   });
-  EXPECT_TRUE(mesh.vertices.colwise().maxCoeff().transpose().isApprox(half));
+  EXPECT_TRUE(mesh.vertices.colwise().maxCoeff().transpose().isApprox(half, kRelativeTolerance));
 }
 
 TEST(ProceduralShapes, CylinderIsConformingPositiveWithPolygonVolume) {
@@ -109,8 +120,8 @@ TEST(ProceduralShapes, CylinderIsConformingPositiveWithPolygonVolume) {
   EXPECT_NEAR(area, 3.0 * (std::sqrt(6.0) - std::sqrt(2.0)) * radius * radius, kRelativeTolerance);
   EXPECT_NEAR(totalVolume(mesh), area * length, kRelativeTolerance * area * length);
   expectConforming(mesh, [&](const Eigen::Vector3d& p) {
-    return std::abs(std::abs(p.x()) - length / 2) < 1e-12 ||
-           std::abs(std::hypot(p.y(), p.z()) - radius) < 1e-12;
+    return std::abs(std::abs(p.x()) - length / 2) < kOnBoundary ||
+           std::abs(std::hypot(p.y(), p.z()) - radius) < kOnBoundary;
   });
 }
 
@@ -136,8 +147,8 @@ TEST(ProceduralShapes, TwistRotatesEachSectionRigidlyByItsAngle) {
       // Oracle: the angle between the sections, via the rotation's matrix in
       // closed form (cos, sin) on the (x, y) plane.
       const double angle = total * (p.z() + 2.0) / 4.0;
-      EXPECT_NEAR(q.x(), std::cos(angle) * p.x() - std::sin(angle) * p.y(), 1e-12);
-      EXPECT_NEAR(q.y(), std::sin(angle) * p.x() + std::cos(angle) * p.y(), 1e-12);
+      EXPECT_NEAR(q.x(), std::cos(angle) * p.x() - std::sin(angle) * p.y(), kVertexMapTolerance);
+      EXPECT_NEAR(q.y(), std::sin(angle) * p.x() + std::cos(angle) * p.y(), kVertexMapTolerance);
     }
   }
 }
@@ -153,12 +164,13 @@ TEST(ProceduralShapes, BendKeepsNeutralFibreLengthAndEndsUpReversed) {
     const Eigen::Vector3d p = bar.vertices.row(v);
     const Eigen::Vector3d q = bent.row(v);
     // Distance to the bend axis (through origin + R ey along ez) is R - y.
-    EXPECT_NEAR(std::hypot(q.x() - origin.x(), q.y() - radius), radius - p.y(), 1e-12);
-    EXPECT_NEAR(q.z(), p.z(), 1e-12);
-    if (std::abs(p.x() - length / 2) < 1e-12) {
+    EXPECT_NEAR(std::hypot(q.x() - origin.x(), q.y() - radius), radius - p.y(),
+                kVertexMapTolerance);
+    EXPECT_NEAR(q.z(), p.z(), kVertexMapTolerance);
+    if (std::abs(p.x() - length / 2) < kOnBoundary) {
       // The far end is turned by π: x maps back to origin's abscissa.
-      EXPECT_NEAR(q.x(), origin.x(), 1e-12);
-      EXPECT_NEAR(q.y(), 2 * radius - p.y(), 1e-12);
+      EXPECT_NEAR(q.x(), origin.x(), kVertexMapTolerance);
+      EXPECT_NEAR(q.y(), 2 * radius - p.y(), kVertexMapTolerance);
     }
   }
   EXPECT_GT(minVolume(TetMesh{bent, bar.tets}), 0.0);
@@ -174,7 +186,7 @@ TEST(ProceduralShapes, SkinningRigidCasesAndDqsPreservesLengthsWhereLbsCollapses
   }
   const Eigen::Vector3d joint = Eigen::Vector3d::Zero();
   const Eigen::MatrixXd weights = twoBoneWeights(points, joint, Eigen::Vector3d::UnitX(), 0.4);
-  EXPECT_TRUE(weights.rowwise().sum().isApproxToConstant(1.0, 1e-15));
+  EXPECT_TRUE(weights.rowwise().sum().isApproxToConstant(1.0, kPartitionOfUnity));
   const double angle = 170.0 * kPi / 180.0;
   // Twisting about the bone axis: DQS keeps every point's distance to the
   // axis; LBS shrinks points with weight 1/2 by cos(85°) (candy wrapper).
@@ -184,18 +196,18 @@ TEST(ProceduralShapes, SkinningRigidCasesAndDqsPreservesLengthsWhereLbsCollapses
   const Vertices lbs = linearBlendSkinning(points, weights, bones);
   for (Eigen::Index v = 0; v < points.rows(); ++v) {
     const double r = std::hypot(points(v, 1), points(v, 2));
-    EXPECT_NEAR(std::hypot(dqs(v, 1), dqs(v, 2)), r, 1e-12);
-    EXPECT_NEAR(dqs(v, 0), points(v, 0), 1e-12);
+    EXPECT_NEAR(std::hypot(dqs(v, 1), dqs(v, 2)), r, kVertexMapTolerance);
+    EXPECT_NEAR(dqs(v, 0), points(v, 0), kVertexMapTolerance);
     // Oracle for LBS: |(1-w) p + w R p| in the section, closed form.
     const double w = weights(v, 1);
     const double expected =
         r * std::sqrt((1 - w) * (1 - w) + w * w + 2 * w * (1 - w) * std::cos(angle));
-    EXPECT_NEAR(std::hypot(lbs(v, 1), lbs(v, 2)), expected, 1e-12);
+    EXPECT_NEAR(std::hypot(lbs(v, 1), lbs(v, 2)), expected, kVertexMapTolerance);
     // Rigid parts: weight 0 keeps the point, weight 1 applies bone 1.
     if (w == 0.0 || w == 1.0) {
       const Eigen::Vector3d rigid = bones[w == 1.0 ? 1 : 0] * Eigen::Vector3d(points.row(v));
-      EXPECT_TRUE(Eigen::Vector3d(dqs.row(v)).isApprox(rigid, 1e-12));
-      EXPECT_TRUE(Eigen::Vector3d(lbs.row(v)).isApprox(rigid, 1e-12));
+      EXPECT_TRUE(Eigen::Vector3d(dqs.row(v)).isApprox(rigid, kVertexMapTolerance));
+      EXPECT_TRUE(Eigen::Vector3d(lbs.row(v)).isApprox(rigid, kVertexMapTolerance));
     }
   }
 }

@@ -32,6 +32,14 @@ constexpr double kOutsideWinding = 0.1;
 constexpr int kSamples = 64;
 // Barycentric distances of the triangles' edge rows (triangleSamples).
 constexpr double kEdgeOffsets[] = {1e-2, 1e-4, 1e-6};
+// Vertices of the cylinder's sections at x = -1.5, 1.5 and on the rim's z = 0
+// line come out of sin/cos and grid arithmetic within a few ulps of those
+// values (sin(pi) = 1.2e-16); the next sections are 1/6 away in x and the
+// next rim vertices 0.3 sin(30 deg) = 0.15 in z.
+constexpr double kVertexSelection = 1e-9;
+// The chord between two bent rim vertices against its closed form: the bend
+// is sin/cos of angles <= pi on coordinates <= 2, a few ulps each.
+constexpr double kChordTolerance = 1e-9;
 
 // Winding number of the closed surface about p: Σ solid angles / 4π.
 double windingNumber(const SurfaceMesh& surface, const Eigen::Vector3d& p) {
@@ -156,7 +164,7 @@ TEST(SurfaceInterior, SegmentAcrossTheGapIsOutsideAndAcrossAnArmInside) {
     int best = -1;
     for (int v = 0; v < straight.vertices.rows(); ++v) {
       const Eigen::Vector3d p = straight.vertices.row(v);
-      if (std::abs(p.x() - x) > 1e-9 || std::abs(p.z()) > 1e-9) continue;
+      if (std::abs(p.x() - x) > kVertexSelection || std::abs(p.z()) > kVertexSelection) continue;
       if (best < 0 || side * p.y() > side * straight.vertices(best, 1)) best = v;
     }
     return best;
@@ -168,7 +176,7 @@ TEST(SurfaceInterior, SegmentAcrossTheGapIsOutsideAndAcrossAnArmInside) {
   ASSERT_GE(otherInner, 0);
   const SurfaceMesh u = bentCylinder();
   ASSERT_NEAR((u.vertices.row(inner) - u.vertices.row(otherInner)).norm(),
-              2 * (4 / kPi - 0.3) * std::sin(kPi / 2 - 0.5 * kPi / 4), 1e-9);
+              2 * (4 / kPi - 0.3) * std::sin(kPi / 2 - 0.5 * kPi / 4), kChordTolerance);
   const SurfaceInterior interior(u.vertices, u.triangles);
   EXPECT_TRUE(interior.segmentInside(inner, outer));
   EXPECT_FALSE(interior.segmentInside(inner, otherInner));

@@ -12,6 +12,17 @@
 namespace tetblend {
 namespace {
 
+// The flap's relative area against h / 4: the dropped second-order term is
+// h^2 / 2 relative (~1e-23) and the flap's cross product has one nonzero
+// product (1 * h), so its area is exact up to a few roundings relative.
+constexpr double kFirstOrderRelative = 1e-6;
+// Signed volumes of cubes with small integer corners: sums of exact integer
+// products over 6, exact or within an ulp of the volume.
+constexpr double kUnitCubeVolume = 1e-15;
+// 27 - 1 summed over 24 triangles of corners -1 to 2: a few ulps of 27 (ulp
+// 3.6e-15).
+constexpr double kCavityVolume = 1e-13;
+
 using testing_surfaces::cube;
 using testing_surfaces::join;
 using testing_surfaces::reversed;
@@ -108,7 +119,7 @@ TEST(SurfaceValidation, ZeroAreaBothSidesOfTheTolerance) {
   const double hAt = 4.0 * tol;  // relative area h/(4 + 2h^2) = tol to first order
   const SurfaceValidation below = validateSurface(flap(0.9 * hAt), kFile, openOptions());
   expectProblem(below, Kind::kZeroAreaFace, 1, "face");
-  EXPECT_NEAR(find(below, Kind::kZeroAreaFace)->value, 0.9 * hAt / 4.0, 1e-6 * tol);
+  EXPECT_NEAR(find(below, Kind::kZeroAreaFace)->value, 0.9 * hAt / 4.0, kFirstOrderRelative * tol);
   const SurfaceValidation above = validateSurface(flap(1.1 * hAt), kFile, openOptions());
   EXPECT_TRUE(above.ok()) << above.problems.front().message;
   const SurfaceValidation flat = validateSurface(flap(0.0), kFile, openOptions());
@@ -206,7 +217,7 @@ TEST(SurfaceValidation, InwardCubeIsFoundAndReversed) {
   const SurfaceValidation v = validateSurface(m, kFile);
   ASSERT_EQ(v.problems.size(), 1u);
   expectProblem(v, Kind::kInwardOrientation, 0, "first face");
-  EXPECT_NEAR(v.problems[0].value, -1.0, 1e-15);  // volume of the unit cube, reversed
+  EXPECT_NEAR(v.problems[0].value, -1.0, kUnitCubeVolume);  // volume of the unit cube, reversed
   const OrientationFix fix = orientConsistently(m);
   EXPECT_EQ(fix.reversedComponents, std::vector<int>{0});
   EXPECT_EQ(fix.flippedFaces.size(), 12u);
@@ -219,7 +230,7 @@ TEST(SurfaceValidation, CavityMustFaceIntoTheCavity) {
   const SurfaceValidation good = validateSurface(goodCavity, kFile);
   EXPECT_TRUE(good.ok()) << good.problems.front().message;
   EXPECT_EQ(good.componentCount, 2);
-  EXPECT_NEAR(enclosedVolume(goodCavity), 27.0 - 1.0, 1e-13);
+  EXPECT_NEAR(enclosedVolume(goodCavity), 27.0 - 1.0, kCavityVolume);
   const std::vector<SurfaceComponent> parts = surfaceComponents(goodCavity);
   ASSERT_EQ(parts.size(), 2u);
   EXPECT_EQ(parts[0].nestingDepth, 0);
@@ -229,7 +240,7 @@ TEST(SurfaceValidation, CavityMustFaceIntoTheCavity) {
   const SurfaceValidation v = validateSurface(bad, kFile);
   ASSERT_EQ(v.problems.size(), 1u);
   expectProblem(v, Kind::kInwardOrientation, 12, "first face");
-  EXPECT_NEAR(v.problems[0].value, 1.0, 1e-15);
+  EXPECT_NEAR(v.problems[0].value, 1.0, kUnitCubeVolume);
   const OrientationFix fix = orientConsistently(bad);
   EXPECT_EQ(fix.reversedComponents, std::vector<int>{1});
   EXPECT_EQ(bad.triangles, goodCavity.triangles);

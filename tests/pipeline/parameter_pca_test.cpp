@@ -12,6 +12,13 @@ namespace tetblend {
 namespace {
 
 constexpr unsigned kDefaultSeed = 20240611;
+// sigma and the covariance's eigen-residual come from a self-adjoint
+// eigensolve of the 4x4 Gram matrix of centred vectors in [-1, 1]^12
+// (entries O(10)): a few hundred ulps of the O(1) sigmas.
+constexpr double kEigenTolerance = 1e-12;
+// The mean weights 1/(n+1) times a 12x3 basis of entries <= 1 against the
+// oracle's row mean: a few roundings per entry, ~1e-15 each.
+constexpr double kMeanReconstruction = 1e-14;
 
 TEST(ParameterPca, WeightStepsReproduceThePrincipalDirections) {
   // Oracle: build the PCA of random vectors directly (covariance of the n+1
@@ -32,11 +39,11 @@ TEST(ParameterPca, WeightStepsReproduceThePrincipalDirections) {
   for (int k = 0; k < n; ++k) basis.col(k) = p[k];
   for (std::size_t i = 0; i < pca.steps.size(); ++i) {
     const Eigen::VectorXd d = basis * pca.steps[i];  // +1 sigma in parameter space
-    EXPECT_NEAR(d.norm(), pca.sigmas[i], 1e-12);
+    EXPECT_NEAR(d.norm(), pca.sigmas[i], kEigenTolerance);
     // d is an eigenvector of the covariance with eigenvalue sigma^2.
-    EXPECT_LT((cov * d - pca.sigmas[i] * pca.sigmas[i] * d).norm(), 1e-12);
+    EXPECT_LT((cov * d - pca.sigmas[i] * pca.sigmas[i] * d).norm(), kEigenTolerance);
   }
-  EXPECT_LT((basis * pca.meanWeights - mean).norm(), 1e-14);
+  EXPECT_LT((basis * pca.meanWeights - mean).norm(), kMeanReconstruction);
 }
 
 }  // namespace
