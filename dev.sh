@@ -7,6 +7,8 @@
 #   ./dev.sh asan    set up, build with ASan+UBSan into build/asan, run the suite
 #                    (without the Python module: Debian's python3 cannot load
 #                    an ASan-instrumented extension)
+#   ./dev.sh asan-ci the same for the tests labelled "input" only (readers,
+#                    writers, model file, pipeline, command line; what CI runs)
 #   ./dev.sh bench   set up, build, and run the benchmarks (figures for README)
 #   ./dev.sh fuzz [seconds]  set up, build the reader fuzzers (clang, libFuzzer,
 #                    ASan+UBSan) into build/fuzz, replay their seeds and
@@ -22,6 +24,19 @@ build() { # build <dir> <cmake args...>
   cmake --build "$dir" --parallel "$jobs"
 }
 
+asan_configure() {
+  cmake -S . -B build/asan -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DTETBLEND_SANITIZE=ON \
+    -DTETBLEND_BUILD_BENCHMARKS=OFF -DTETBLEND_BUILD_PYTHON=OFF
+}
+
+asan_ctest() { # asan_ctest <ctest args...>
+  # A huge allocation fails as in a normal build (the readers' tests make
+  # VTK try one); fuzz/lsan.supp names VTK 9.1's own leaks on damaged files.
+  ASAN_OPTIONS=detect_leaks=1:allocator_may_return_null=1 UBSAN_OPTIONS=print_stacktrace=1 \
+    LSAN_OPTIONS="suppressions=$PWD/fuzz/lsan.supp" \
+    ctest --test-dir build/asan --output-on-failure --parallel "$jobs" "$@"
+}
+
 case "${1:-}" in
   setup) bash setup.sh ;;
   build) bash setup.sh && build build/release -DCMAKE_BUILD_TYPE=Release ;;
@@ -33,13 +48,14 @@ case "${1:-}" in
     ctest --test-dir build/release --output-on-failure --parallel "$jobs" ;;
   asan)
     bash setup.sh
-    build build/asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DTETBLEND_SANITIZE=ON \
-      -DTETBLEND_BUILD_BENCHMARKS=OFF -DTETBLEND_BUILD_PYTHON=OFF
-    # A huge allocation fails as in a normal build (the readers' tests make
-    # VTK try one); fuzz/lsan.supp names VTK 9.1's own leaks on damaged files.
-    ASAN_OPTIONS=detect_leaks=1:allocator_may_return_null=1 UBSAN_OPTIONS=print_stacktrace=1 \
-      LSAN_OPTIONS="suppressions=$PWD/fuzz/lsan.supp" \
-      ctest --test-dir build/asan --output-on-failure --parallel "$jobs" ;;
+    asan_configure
+    cmake --build build/asan --parallel "$jobs"
+    asan_ctest ;;
+  asan-ci)
+    bash setup.sh
+    asan_configure
+    cmake --build build/asan --parallel "$jobs" --target input_tests
+    asan_ctest -L input ;;
   bench)
     bash setup.sh && build build/release -DCMAKE_BUILD_TYPE=Release
     for b in build/release/apps/bench/bench_*; do "$b"; done ;;
@@ -51,5 +67,5 @@ case "${1:-}" in
     cmake --build build/fuzz --parallel "$jobs" --target fuzz_all
     TETBLEND_FUZZ_SECONDS="${2:-30}" \
       ctest --test-dir build/fuzz --output-on-failure --parallel "$jobs" -L fuzz ;;
-  *) sed -n '2,14p' "$0"; exit 2 ;;
+  *) sed -n '2,16p' "$0"; exit 2 ;;
 esac
