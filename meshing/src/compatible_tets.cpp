@@ -179,9 +179,7 @@ struct CompatibleTetBuilder::Impl {
       const std::vector<int> region = interiorRegion(inverted, rings);
       Vertices current = positions;  // every attempt starts from the best state
       if (!region.empty()) {
-        rounds += untangle(rest.tets, elements, region, effort.maxRounds,
-                           effort.iterationsPerRound, current)
-                      .rounds;
+        rounds += untangle(rest.tets, elements, region, effort, current).rounds;
       }
       std::vector<int> now = invertedTets(current, rest.tets);
       if (now.size() < inverted.size()) {

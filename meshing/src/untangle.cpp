@@ -36,7 +36,8 @@ constexpr size_t kTetGrain = 1024;
 // corners each).
 constexpr size_t kVertexGrain = 1024;
 // An untangling attempt gives up when this many rounds in a row neither
-// raised the smallest det F nor lowered the count of inverted tets: the free
+// raised the smallest det F (by UntangleEffort::minDetProgress) nor
+// lowered the count of inverted tets: the free
 // region is too small (or the example cannot be embedded), and a larger
 // region or refinement is the remedy. (Rounds with Newton steps converge at
 // each ε, so min det F can sit still for many rounds while the count falls:
@@ -434,8 +435,8 @@ EnergyChange minimiseNewton(UntangleEnergy& energy, double epsilon, int maxItera
 }  // namespace
 
 UntangleOutcome untangle(const Tets& tets, const std::vector<TetElement>& elements,
-                         const std::vector<int>& freeVertices, int maxRounds,
-                         int iterationsPerRound, Vertices& positions) {
+                         const std::vector<int>& freeVertices, const UntangleEffort& effort,
+                         Vertices& positions) {
   UntangleEnergy energy(tets, elements, freeVertices, positions);
   UntangleOutcome outcome;
   auto [minDet, inverted] = energy.determinants();
@@ -447,12 +448,12 @@ UntangleOutcome untangle(const Tets& tets, const std::vector<TetElement>& elemen
   double bestMinDet = minDet;
   int fewestInverted = inverted;
   int stagnant = 0;
-  while (minDet <= 0.0 && outcome.rounds < maxRounds && stagnant < kStagnantRounds &&
+  while (minDet <= 0.0 && outcome.rounds < effort.maxRounds && stagnant < kStagnantRounds &&
          epsilon >= -kHopelessEpsilon * minDet) {
-    const EnergyChange change = minimiseNewton(energy, epsilon, iterationsPerRound, solver, x);
+    const EnergyChange change = minimiseNewton(energy, epsilon, effort.iterationsPerRound, solver, x);
     ++outcome.rounds;
     std::tie(minDet, inverted) = energy.determinants();
-    if (minDet > bestMinDet || inverted < fewestInverted) {
+    if (minDet > bestMinDet + effort.minDetProgress * std::abs(bestMinDet) || inverted < fewestInverted) {
       stagnant = 0;
     } else {
       ++stagnant;

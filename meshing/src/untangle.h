@@ -18,6 +18,7 @@
 
 #include "tet_elements.h"
 #include "tetblend/core/mesh_types.h"
+#include "tetblend/meshing/compatible_tets.h"
 
 namespace tetblend {
 
@@ -29,10 +30,11 @@ struct UntangleOutcome {
 /// Moves the vertices listed in `freeVertices` (distinct indices into
 /// `positions`, #V by 3) to remove inverted tets among the tets touching
 /// them; every other vertex stays put. Stops as soon as all those tets have
-/// det F > 0, or after maxRounds rounds of at most iterationsPerRound Newton
-/// steps each, or when it stalls.
+/// det F > 0, or after effort.maxRounds rounds of at most
+/// effort.iterationsPerRound Newton steps each, or when it stalls
+/// (effort.maxRings is the caller's).
 UntangleOutcome untangle(const Tets& tets, const std::vector<TetElement>& elements,
-                         const std::vector<int>& freeVertices, int maxRounds,
-                         int iterationsPerRound, Vertices& positions);
+                         const std::vector<int>& freeVertices, const UntangleEffort& effort,
+                         Vertices& positions);
 
 }  // namespace tetblend

@@ -54,6 +54,14 @@ struct UntangleEffort {
   /// rounds reach ε ≈ 5e-4 (60 rounds, 0.05, left knot1's 720° twist
   /// with tets inverted at min det F = −0.06).
   int maxRounds = 150;
+  /// The rise of the smallest det F, relative to |min det F|, that counts
+  /// as progress in the stall test (untangle.cpp), besides a fall of the
+  /// inverted count. Clean examples: any rise (the barrier raises it for
+  /// many rounds before the count falls; 1e-3 left 3 corpus poses with 66
+  /// tets inverted instead of 1 with 78). Examples whose surface intersects
+  /// itself: 1e-3 (bench_meshing's 1 M hard bar crept up by less for 40
+  /// rounds, 16 s, to end with 3 times the inverted tets it started with).
+  double minDetProgress = 0.0;
 };
 
 /// Options of CompatibleTetBuilder, with their defaults.
