@@ -38,8 +38,11 @@ void blendSeries(const ModelData& model, const BlendSettings& settings,
   }
   checkOutputs(outputs, inputs);
   ensureDirectory(dir);
-  const ShapeBlender blender = makeBlender(
-      model, {method}, parseOnOff(settings.consistency, "--consistency"), settings.nonlinear);
+  const QualityFigures figures = qualityFigures(arrays, true);
+  const ShapeBlender blender =
+      makeBlender(model, {method}, parseOnOff(settings.consistency, "--consistency"),
+                  settings.nonlinear, figures.targetResidual);
+  const RestTetData restData = restTetData(model.rest);
   ProgressBar progress("blend", items.size(), quiet);
   std::vector<PvdDataSet> sets;
   std::ostringstream csv;
@@ -50,7 +53,7 @@ void blendSeries(const ModelData& model, const BlendSettings& settings,
   int mostInverted = 0;
   std::string worst;
   for (const SeriesItem& item : items) {
-    const BlendedShape shape = blendShape(blender, model, item.weights, method);
+    const BlendedShape shape = blendShape(blender, model, restData, item.weights, method, figures);
     if (shape.quality.invertedCount > 0) ++shapesWithInverted;
     if (shape.quality.invertedCount > mostInverted) {
       mostInverted = shape.quality.invertedCount;

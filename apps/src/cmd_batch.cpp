@@ -237,12 +237,13 @@ void runBatch(const BatchArgs& a) {
       }
     }
     const ThreadLimit limit(a.threads >= 0 ? a.threads : spec.threads);
+    const QualityFigures figures = qualityFigures(arrays, !spec.surfaceOnly);
     std::unique_ptr<ShapeBlender> blender;
     for (BlendMethod m : methods) {
       try {
         if (!blender) {
-          blender =
-              std::make_unique<ShapeBlender>(makeBlender(model, {m}, consistency, spec.nonlinear));
+          blender = std::make_unique<ShapeBlender>(
+              makeBlender(model, {m}, consistency, spec.nonlinear, figures.targetResidual));
         } else {
           blender->prepare(m);
         }
@@ -251,6 +252,7 @@ void runBatch(const BatchArgs& a) {
       }
     }
 
+    const RestTetData restData = restTetData(model.rest);
     ProgressBar progress("batch", pendingJobs.size(), a.quiet);
     std::mutex blendMutex;
     std::atomic<std::size_t> next{0};
@@ -266,7 +268,8 @@ void runBatch(const BatchArgs& a) {
           BlendedShape shape;
           {
             std::lock_guard<std::mutex> lock(blendMutex);
-            shape = blendShape(*blender, model, weights, parseMethod(job.method));
+            shape =
+                blendShape(*blender, model, restData, weights, parseMethod(job.method), figures);
           }
           writeBlendResult(o.files.front(), model, shape.vertices,
                            selectQualityArrays(shape.cellData, arrays, "\"quality_arrays\""),

@@ -54,10 +54,12 @@ void runBlend(const BlendArgs& a) {
                                     : prepareWithProgress(a.rest, a.examples, a.prepare, messages);
   requireWeightCount(weights, model.examples.size(), "--weights");
   ProgressBar progress("blend", 3, a.prepare.quiet);
-  const ShapeBlender blender = makeBlender(
-      model, {method}, parseOnOff(a.blend.consistency, "--consistency"), a.blend.nonlinear);
+  const QualityFigures figures = qualityFigures(arrays, extensionOf(a.output) == ".vtu");
+  const ShapeBlender blender =
+      makeBlender(model, {method}, parseOnOff(a.blend.consistency, "--consistency"),
+                  a.blend.nonlinear, figures.targetResidual);
   progress.advance();
-  const BlendedShape shape = blendShape(blender, model, weights, method);
+  const BlendedShape shape = blendShape(blender, model, weights, method, figures);
   progress.advance();
   writeBlendResult(a.output, model, shape.vertices,
                    selectQualityArrays(shape.cellData, arrays, "--quality-arrays"), formats);
