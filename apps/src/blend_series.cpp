@@ -27,6 +27,8 @@ void blendSeries(const ModelData& model, const BlendSettings& settings,
   const BlendMethod method = parseMethod(settings.method);
   const std::vector<std::string> formats = parseSurfaceFormats(settings.surfaceFormats);
   const QualityArrays arrays = parseQualityArrays(settings.qualityArrays, "--quality-arrays");
+  const VtkCompression compression =
+      parseVtkCompression(settings.compression, settings.compressionLevel, "--compression");
   for (const SeriesItem& item : items)
     requireWeightCount(item.weights, model.examples.size(), "weights of " + item.name);
   std::vector<std::string> outputs = {(fs::path(dir) / (collection + ".pvd")).string(),
@@ -60,7 +62,8 @@ void blendSeries(const ModelData& model, const BlendSettings& settings,
       worst = item.name;
     }
     writeBlendResult((fs::path(dir) / (item.name + ".vtu")).string(), model, shape.vertices,
-                     selectQualityArrays(shape.cellData, arrays, "--quality-arrays"), formats);
+                     selectQualityArrays(shape.cellData, arrays, "--quality-arrays"), formats,
+                     compression);
     sets.push_back({item.time, item.name + ".vtu", 0});
     csv << item.name << "," << formatNumber(item.time);
     for (double w : item.weights) csv << "," << formatNumber(w);

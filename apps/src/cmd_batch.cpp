@@ -64,7 +64,9 @@ using nlohmann::json;
 
 struct BatchArgs {
   std::string spec;
-  int threads = -1;  // -1: take the spec's value
+  int threads = -1;          // -1: take the spec's value
+  std::string compression;   // "": take the spec's value
+  int compressionLevel = 0;  // 0: take the spec's value
   bool quiet = false;
 };
 
@@ -167,7 +169,12 @@ std::string runNote(const BatchSpec& spec, std::size_t pending) {
 }
 
 void runBatch(const BatchArgs& a) {
-  const BatchSpec spec = readBatchSpec(a.spec);
+  BatchSpec spec = readBatchSpec(a.spec);
+  if (!a.compression.empty() || a.compressionLevel != 0) {
+    spec.compression = parseVtkCompression(
+        a.compression.empty() ? vtkCompressorName(spec.compression.compressor) : a.compression,
+        a.compressionLevel != 0 ? a.compressionLevel : spec.compression.level, "--compression");
+  }
   const std::vector<std::string> formats = parseSurfaceFormats(spec.surfaceFormats);
   const bool consistency = parseOnOff(spec.consistency, a.spec + ": \"consistency\"");
   const std::string arraysWhere = a.spec + ": \"quality_arrays\"";
@@ -273,7 +280,7 @@ void runBatch(const BatchArgs& a) {
           }
           writeBlendResult(o.files.front(), model, shape.vertices,
                            selectQualityArrays(shape.cellData, arrays, "\"quality_arrays\""),
-                           formats);
+                           formats, spec.compression);
           o.quality = shape.quality;
           json quality = json::object();
           for (const auto& c : qualityColumns(o.quality)) quality[c.first] = c.second;
@@ -334,12 +341,19 @@ void registerBatch(CLI::App& root) {
       "Spec: {\"model\", \"output_dir\" (default <spec>_out), \"method\" (default kaji), "
       "\"consistency\" (on), \"nonlinear\" (false), \"surface_formats\" ([]), \"surface_only\" "
       "(false), \"quality_arrays\" (\"all\"; \"none\" or names, as --quality-arrays of blend), "
+      "\"compression\" (\"lz4\"; \"zlib\" or \"none\"), \"compression_level\" (5; 1..9), "
       "\"threads\" (0), "
       "\"jobs\": [{\"name\", \"weights\": [..], \"method\"}]}; paths relative to the spec.");
   cmd->add_option("SPEC", args->spec, "batch spec (.json)")->required();
   cmd->add_option("--threads", args->threads,
                   "job workers and TBB threads; 0 = all cores; default: the spec's \"threads\"")
       ->check(CLI::Range(0, kMaxThreads));
+  cmd->add_option("--compression", args->compression,
+                  "compressor of the .vtu/.vtp data: lz4, zlib or none; default: the spec's "
+                  "\"compression\"");
+  cmd->add_option("--compression-level", args->compressionLevel,
+                  "1 (fastest) .. 9 (smallest); default: the spec's \"compression_level\"")
+      ->check(CLI::Range(kMinCompressionLevel, kMaxCompressionLevel));
   addQuietOption(*cmd, args->quiet);
   cmd->callback([args] { runBatch(*args); });
 }

@@ -43,6 +43,8 @@ void runBlend(const BlendArgs& a) {
   const std::vector<double> weights = parseWeights(a.weights, "--weights");
   const BlendMethod method = parseMethod(a.blend.method);
   const std::vector<std::string> formats = parseSurfaceFormats(a.blend.surfaceFormats);
+  const VtkCompression compression =
+      parseVtkCompression(a.blend.compression, a.blend.compressionLevel, "--compression");
   std::vector<std::string> inputs = a.examples;
   inputs.push_back(fromModel ? a.model : a.rest);
   checkOutputs(blendOutputFiles(a.output, formats), inputs);
@@ -62,7 +64,8 @@ void runBlend(const BlendArgs& a) {
   const BlendedShape shape = blendShape(blender, model, weights, method, figures);
   progress.advance();
   writeBlendResult(a.output, model, shape.vertices,
-                   selectQualityArrays(shape.cellData, arrays, "--quality-arrays"), formats);
+                   selectQualityArrays(shape.cellData, arrays, "--quality-arrays"), formats,
+                   compression);
   progress.advance();
   progress.finish();
   if (shape.quality.invertedCount > 0) {
