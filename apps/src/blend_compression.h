@@ -6,7 +6,7 @@
 
 namespace tetblend::cli {
 
-/// lz4 at VTK's level 5: a batch of .vtu + .vtp jobs ran 3.4 times as fast as
+/// lz4 at VTK's level 5: a batch of .vtu + .vtp jobs ran 3.3 times as fast as
 /// with zlib for files 23 % larger (README, Benchmarks: batch throughput).
 inline constexpr VtkCompression kBlendOutputCompression{VtkCompressor::lz4, 5};
 

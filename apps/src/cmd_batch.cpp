@@ -25,10 +25,10 @@
 // ends, even by kill -9); a second run on the same directory is refused.
 //
 // Concurrency: the blends take turns behind a mutex (each is parallel over
-// tets inside). The stitch itself is documented and tested safe for
-// concurrent use; whether concurrent blends are faster here is not measured
-// yet (issue 13). The quality figures and the compressed output files of
-// different jobs are made concurrently by the job workers.
+// tets inside); the quality figures and the compressed output files of
+// different jobs are made concurrently by the job workers. The stitch is
+// documented and tested safe for concurrent use, but blends running
+// concurrently measured no faster (bench_batch, README: Benchmarks).
 
 #include <atomic>
 #include <chrono>
