@@ -80,6 +80,14 @@ std::string fingerprint(const BatchSpec& spec, const BatchJob& job, std::uint64_
   if (spec.surfaceOnly) key += ";surface_only";
   const QualityArrays arrays = parseQualityArrays(spec.qualityArrays, "quality_arrays");
   if (!arrays.all) key += ";quality_arrays=" + qualityArraysText(arrays);
+  // The level does not matter without a compressor.
+  const VtkCompression& c = spec.compression;
+  const std::string compression =
+      vtkCompressorName(c.compressor) +
+      (c.compressor == VtkCompressor::none ? "" : "/" + std::to_string(c.level));
+  const VtkCompression& d = kBlendOutputCompression;
+  if (compression != vtkCompressorName(d.compressor) + "/" + std::to_string(d.level))
+    key += ";compression=" + compression;
   return hex64(fnv1a64(reinterpret_cast<const unsigned char*>(key.data()), key.size()));
 }
 

@@ -36,9 +36,9 @@ class OutputDirLock {
 std::uint64_t fileHash(const std::string& path);
 
 /// A job's fingerprint: FNV-1a 64 (hex) of the model file's hash, the job's
-/// method, weights, consistency, nonlinear, surface formats, surface_only and
+/// method, weights, consistency, nonlinear, surface formats, surface_only,
 /// quality arrays (equal choices, however written, give equal keys;
-/// InputError for a spec.qualityArrays that does not parse).
+/// InputError for a spec.qualityArrays that does not parse) and compression.
 std::string fingerprint(const BatchSpec& spec, const BatchJob& job, std::uint64_t modelHash);
 
 /// The last journal line of each job name; lines that do not parse (one cut

@@ -71,6 +71,15 @@ BatchSpec readBatchSpec(const std::string& path) {
     spec.surfaceOnly = j.value("surface_only", false);
     spec.qualityArrays =
         qualityArraysText(j.value("quality_arrays", json("all")), path + ": \"quality_arrays\"");
+    const json level = j.value("compression_level", json(kBlendOutputCompression.level));
+    if (!level.is_number_integer()) {
+      throw InputError(path + ": \"compression_level\" is " + level.dump() +
+                       ": give a whole number " + std::to_string(kMinCompressionLevel) + ".." +
+                       std::to_string(kMaxCompressionLevel));
+    }
+    spec.compression = parseVtkCompression(
+        j.value("compression", vtkCompressorName(kBlendOutputCompression.compressor)),
+        level.get<int>(), path + ": \"compression\"");
     const json threads = j.value("threads", json(0));
     if (!threads.is_number_integer() || threads.get<double>() < 0 ||
         threads.get<double>() > kMaxThreads) {

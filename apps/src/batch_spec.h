@@ -10,6 +10,9 @@
 //     "surface_only": false,         write <name>.vtp alone, no .vtu (default false)
 //     "quality_arrays": "all",       .vtu cell arrays: "all", "none", "a,b" or
 //                                    ["a", "b"] (default all; quality_arrays.h)
+//     "compression": "lz4",          compressor of the .vtu/.vtp: lz4, zlib or none
+//                                    (default lz4)
+//     "compression_level": 5,        1 (fastest) .. 9 (smallest) (default 5)
 //     "threads": 0,                  job workers, 0 = all cores, at most 1024 (default 0)
 //     "jobs": [ {"name": "half", "weights": [0.5, 0], "method": "dq"}, ... ]
 //   }
@@ -20,6 +23,8 @@
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
+
+#include "blend_compression.h"
 
 namespace tetblend::cli {
 
@@ -41,14 +46,15 @@ struct BatchSpec {
   std::vector<std::string> surfaceFormats;
   bool surfaceOnly = false;
   std::string qualityArrays = "all";  ///< the text of --quality-arrays; "a,b" for ["a", "b"]
+  VtkCompression compression = kBlendOutputCompression;
   int threads = 0;
   std::vector<BatchJob> jobs;
 };
 
 /// Reads `path`. InputError (naming the file and the entry) for unreadable
 /// JSON, a missing model or jobs entry, a quality_arrays neither a string nor
-/// an array of strings, a job without a valid name, or two jobs with one
-/// name.
+/// an array of strings, an unknown compression or a level outside 1..9, a
+/// job without a valid name, or two jobs with one name.
 BatchSpec readBatchSpec(const std::string& path);
 
 }  // namespace tetblend::cli

@@ -29,6 +29,15 @@ void addBlendOptions(CLI::App& command, BlendSettings& settings) {
                   "a comma-separated list of " +
                       arrays)
       ->capture_default_str();
+  command
+      .add_option("--compression", settings.compression,
+                  "compressor of the .vtu/.vtp data: lz4, zlib (smaller files, slower) or none; "
+                  "VTK and ParaView read all three")
+      ->capture_default_str();
+  command
+      .add_option("--compression-level", settings.compressionLevel,
+                  "compression level, 1 (fastest) .. 9 (smallest); ignored by none")
+      ->capture_default_str();
 }
 
 BlendMethod parseMethod(const std::string& name) { return blendMethodFromName(name); }

@@ -1,12 +1,14 @@
 #pragma once
 // Options shared by the subcommands that blend (blend, batch, variations,
 // animate): the method, rotation consistency, the nonlinear stitch, the
-// extra surface formats and the quality arrays written.
+// extra surface formats, the quality arrays written and the compressor of
+// the VTK files.
 
 #include <CLI/CLI.hpp>
 #include <string>
 #include <vector>
 
+#include "blend_compression.h"
 #include "tetblend/blending/blend_method.h"
 
 namespace tetblend::cli {
@@ -18,10 +20,13 @@ struct BlendSettings {
   bool nonlinear = false;                   ///< nonlinear stitch pass after the linear one
   std::vector<std::string> surfaceFormats;  ///< extra surface files beside the .vtp
   std::string qualityArrays = "all";        ///< parseQualityArrays text: all, none or a,b
+  std::string compression =
+      vtkCompressorName(kBlendOutputCompression.compressor);  ///< lz4, zlib or none
+  int compressionLevel = kBlendOutputCompression.level;       ///< 1 (fastest) .. 9 (smallest)
 };
 
-/// Adds --method, --consistency, --nonlinear, --surface-format and
-/// --quality-arrays.
+/// Adds --method, --consistency, --nonlinear, --surface-format,
+/// --quality-arrays, --compression and --compression-level.
 void addBlendOptions(CLI::App& command, BlendSettings& settings);
 
 /// The method named in `settings`; InputError listing the valid names.

@@ -51,7 +51,8 @@ std::vector<std::string> blendOutputFiles(const std::string& outputPath,
 
 void writeBlendResult(const std::string& outputPath, const ModelData& model,
                       const Vertices& positions, const std::vector<NamedArray>& cellData,
-                      const std::vector<std::string>& surfaceFormats) {
+                      const std::vector<std::string>& surfaceFormats,
+                      const VtkCompression& compression) {
   checkBlendOutputPath(outputPath, "output");
   if (positions.rows() != model.rest.vertices.rows()) {
     throw InputError(outputPath + ": " + std::to_string(positions.rows()) +
@@ -63,7 +64,7 @@ void writeBlendResult(const std::string& outputPath, const ModelData& model,
     tetData.pointData.push_back(
         displacementArray(positions, model.rest.vertices, positions.rows()));
     tetData.cellData = cellData;
-    writeTetMesh(outputPath, TetMesh{positions, model.rest.tets}, tetData);
+    writeTetMesh(outputPath, TetMesh{positions, model.rest.tets}, tetData, compression);
   }
 
   const Eigen::Index ns = model.surfaceVertexCount;
@@ -75,7 +76,9 @@ void writeBlendResult(const std::string& outputPath, const ModelData& model,
   for (Eigen::Index i = 0; i < ns; ++i)
     inputIndex.values[static_cast<std::size_t>(i)] = static_cast<double>(i);
   surfaceData.pointData.push_back(std::move(inputIndex));
-  writeSurface(withExtension(outputPath, ".vtp"), surface, surfaceData);
+  SurfaceWriteOptions vtp;
+  vtp.vtp = compression;
+  writeSurface(withExtension(outputPath, ".vtp"), surface, surfaceData, vtp);
   for (const std::string& f : surfaceFormats)
     writeSurface(withExtension(outputPath, "." + f), surface);
 }

@@ -9,6 +9,7 @@
 
 #include "tetblend/core/mesh_types.h"
 #include "tetblend/meshing/mesh_data_arrays.h"
+#include "tetblend/meshing/vtk_compression.h"
 #include "tetblend/pipeline/model_file.h"
 
 namespace tetblend::cli {
@@ -32,9 +33,11 @@ std::vector<std::string> blendOutputFiles(const std::string& outputPath,
 /// for either output, the surface (first surfaceVertexCount vertices, rest
 /// surface triangles, point arrays "displacement" and "input_vertex_index")
 /// to the .vtp and to each extra format. `cellData` is not written for a .vtp
-/// output. Every file is written atomically.
+/// output. The .vtu and .vtp are compressed by `compression`. Every file is
+/// written atomically.
 void writeBlendResult(const std::string& outputPath, const ModelData& model,
                       const Vertices& positions, const std::vector<NamedArray>& cellData,
-                      const std::vector<std::string>& surfaceFormats);
+                      const std::vector<std::string>& surfaceFormats,
+                      const VtkCompression& compression);
 
 }  // namespace tetblend::cli

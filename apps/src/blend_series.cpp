@@ -27,6 +27,8 @@ void blendSeries(const ModelData& model, const BlendSettings& settings,
   const BlendMethod method = parseMethod(settings.method);
   const std::vector<std::string> formats = parseSurfaceFormats(settings.surfaceFormats);
   const QualityArrays arrays = parseQualityArrays(settings.qualityArrays, "--quality-arrays");
+  const VtkCompression compression =
+      parseVtkCompression(settings.compression, settings.compressionLevel, "--compression");
   for (const SeriesItem& item : items)
     requireWeightCount(item.weights, model.examples.size(), "weights of " + item.name);
   std::vector<std::string> outputs = {(fs::path(dir) / (collection + ".pvd")).string(),
@@ -38,8 +40,11 @@ void blendSeries(const ModelData& model, const BlendSettings& settings,
   }
   checkOutputs(outputs, inputs);
   ensureDirectory(dir);
-  const ShapeBlender blender = makeBlender(
-      model, {method}, parseOnOff(settings.consistency, "--consistency"), settings.nonlinear);
+  const QualityFigures figures = qualityFigures(arrays, true);
+  const ShapeBlender blender =
+      makeBlender(model, {method}, parseOnOff(settings.consistency, "--consistency"),
+                  settings.nonlinear, figures.targetResidual);
+  const RestTetData restData = restTetData(model.rest);
   ProgressBar progress("blend", items.size(), quiet);
   std::vector<PvdDataSet> sets;
   std::ostringstream csv;
@@ -50,14 +55,15 @@ void blendSeries(const ModelData& model, const BlendSettings& settings,
   int mostInverted = 0;
   std::string worst;
   for (const SeriesItem& item : items) {
-    const BlendedShape shape = blendShape(blender, model, item.weights, method);
+    const BlendedShape shape = blendShape(blender, model, restData, item.weights, method, figures);
     if (shape.quality.invertedCount > 0) ++shapesWithInverted;
     if (shape.quality.invertedCount > mostInverted) {
       mostInverted = shape.quality.invertedCount;
       worst = item.name;
     }
     writeBlendResult((fs::path(dir) / (item.name + ".vtu")).string(), model, shape.vertices,
-                     selectQualityArrays(shape.cellData, arrays, "--quality-arrays"), formats);
+                     selectQualityArrays(shape.cellData, arrays, "--quality-arrays"), formats,
+                     compression);
     sets.push_back({item.time, item.name + ".vtu", 0});
     csv << item.name << "," << formatNumber(item.time);
     for (double w : item.weights) csv << "," << formatNumber(w);

@@ -25,10 +25,10 @@
 // ends, even by kill -9); a second run on the same directory is refused.
 //
 // Concurrency: the blends take turns behind a mutex (each is parallel over
-// tets inside). The stitch itself is documented and tested safe for
-// concurrent use; whether concurrent blends are faster here is not measured
-// yet (issue 13). The quality figures and the compressed output files of
-// different jobs are made concurrently by the job workers.
+// tets inside); the quality figures and the compressed output files of
+// different jobs are made concurrently by the job workers. The stitch is
+// documented and tested safe for concurrent use, but blends running
+// concurrently measured no faster (bench_batch, README: Benchmarks).
 
 #include <atomic>
 #include <chrono>
@@ -64,7 +64,9 @@ using nlohmann::json;
 
 struct BatchArgs {
   std::string spec;
-  int threads = -1;  // -1: take the spec's value
+  int threads = -1;          // -1: take the spec's value
+  std::string compression;   // "": take the spec's value
+  int compressionLevel = 0;  // 0: take the spec's value
   bool quiet = false;
 };
 
@@ -167,7 +169,12 @@ std::string runNote(const BatchSpec& spec, std::size_t pending) {
 }
 
 void runBatch(const BatchArgs& a) {
-  const BatchSpec spec = readBatchSpec(a.spec);
+  BatchSpec spec = readBatchSpec(a.spec);
+  if (!a.compression.empty() || a.compressionLevel != 0) {
+    spec.compression = parseVtkCompression(
+        a.compression.empty() ? vtkCompressorName(spec.compression.compressor) : a.compression,
+        a.compressionLevel != 0 ? a.compressionLevel : spec.compression.level, "--compression");
+  }
   const std::vector<std::string> formats = parseSurfaceFormats(spec.surfaceFormats);
   const bool consistency = parseOnOff(spec.consistency, a.spec + ": \"consistency\"");
   const std::string arraysWhere = a.spec + ": \"quality_arrays\"";
@@ -237,12 +244,13 @@ void runBatch(const BatchArgs& a) {
       }
     }
     const ThreadLimit limit(a.threads >= 0 ? a.threads : spec.threads);
+    const QualityFigures figures = qualityFigures(arrays, !spec.surfaceOnly);
     std::unique_ptr<ShapeBlender> blender;
     for (BlendMethod m : methods) {
       try {
         if (!blender) {
-          blender =
-              std::make_unique<ShapeBlender>(makeBlender(model, {m}, consistency, spec.nonlinear));
+          blender = std::make_unique<ShapeBlender>(
+              makeBlender(model, {m}, consistency, spec.nonlinear, figures.targetResidual));
         } else {
           blender->prepare(m);
         }
@@ -251,6 +259,7 @@ void runBatch(const BatchArgs& a) {
       }
     }
 
+    const RestTetData restData = restTetData(model.rest);
     ProgressBar progress("batch", pendingJobs.size(), a.quiet);
     std::mutex blendMutex;
     std::atomic<std::size_t> next{0};
@@ -266,11 +275,12 @@ void runBatch(const BatchArgs& a) {
           BlendedShape shape;
           {
             std::lock_guard<std::mutex> lock(blendMutex);
-            shape = blendShape(*blender, model, weights, parseMethod(job.method));
+            shape =
+                blendShape(*blender, model, restData, weights, parseMethod(job.method), figures);
           }
           writeBlendResult(o.files.front(), model, shape.vertices,
                            selectQualityArrays(shape.cellData, arrays, "\"quality_arrays\""),
-                           formats);
+                           formats, spec.compression);
           o.quality = shape.quality;
           json quality = json::object();
           for (const auto& c : qualityColumns(o.quality)) quality[c.first] = c.second;
@@ -331,12 +341,19 @@ void registerBatch(CLI::App& root) {
       "Spec: {\"model\", \"output_dir\" (default <spec>_out), \"method\" (default kaji), "
       "\"consistency\" (on), \"nonlinear\" (false), \"surface_formats\" ([]), \"surface_only\" "
       "(false), \"quality_arrays\" (\"all\"; \"none\" or names, as --quality-arrays of blend), "
+      "\"compression\" (\"lz4\"; \"zlib\" or \"none\"), \"compression_level\" (5; 1..9), "
       "\"threads\" (0), "
       "\"jobs\": [{\"name\", \"weights\": [..], \"method\"}]}; paths relative to the spec.");
   cmd->add_option("SPEC", args->spec, "batch spec (.json)")->required();
   cmd->add_option("--threads", args->threads,
                   "job workers and TBB threads; 0 = all cores; default: the spec's \"threads\"")
       ->check(CLI::Range(0, kMaxThreads));
+  cmd->add_option("--compression", args->compression,
+                  "compressor of the .vtu/.vtp data: lz4, zlib or none; default: the spec's "
+                  "\"compression\"");
+  cmd->add_option("--compression-level", args->compressionLevel,
+                  "1 (fastest) .. 9 (smallest); default: the spec's \"compression_level\"")
+      ->check(CLI::Range(kMinCompressionLevel, kMaxCompressionLevel));
   addQuietOption(*cmd, args->quiet);
   cmd->callback([args] { runBatch(*args); });
 }

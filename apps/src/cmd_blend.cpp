@@ -43,6 +43,8 @@ void runBlend(const BlendArgs& a) {
   const std::vector<double> weights = parseWeights(a.weights, "--weights");
   const BlendMethod method = parseMethod(a.blend.method);
   const std::vector<std::string> formats = parseSurfaceFormats(a.blend.surfaceFormats);
+  const VtkCompression compression =
+      parseVtkCompression(a.blend.compression, a.blend.compressionLevel, "--compression");
   std::vector<std::string> inputs = a.examples;
   inputs.push_back(fromModel ? a.model : a.rest);
   checkOutputs(blendOutputFiles(a.output, formats), inputs);
@@ -54,13 +56,16 @@ void runBlend(const BlendArgs& a) {
                                     : prepareWithProgress(a.rest, a.examples, a.prepare, messages);
   requireWeightCount(weights, model.examples.size(), "--weights");
   ProgressBar progress("blend", 3, a.prepare.quiet);
-  const ShapeBlender blender = makeBlender(
-      model, {method}, parseOnOff(a.blend.consistency, "--consistency"), a.blend.nonlinear);
+  const QualityFigures figures = qualityFigures(arrays, extensionOf(a.output) == ".vtu");
+  const ShapeBlender blender =
+      makeBlender(model, {method}, parseOnOff(a.blend.consistency, "--consistency"),
+                  a.blend.nonlinear, figures.targetResidual);
   progress.advance();
-  const BlendedShape shape = blendShape(blender, model, weights, method);
+  const BlendedShape shape = blendShape(blender, model, weights, method, figures);
   progress.advance();
   writeBlendResult(a.output, model, shape.vertices,
-                   selectQualityArrays(shape.cellData, arrays, "--quality-arrays"), formats);
+                   selectQualityArrays(shape.cellData, arrays, "--quality-arrays"), formats,
+                   compression);
   progress.advance();
   progress.finish();
   if (shape.quality.invertedCount > 0) {

@@ -48,6 +48,14 @@ std::string qualityArraysText(const QualityArrays& choice) {
   return choice.names.empty() ? "none" : join(choice.names);
 }
 
+QualityFigures qualityFigures(const QualityArrays& choice, bool writesVtu) {
+  const auto wanted = [&](const std::string& name) {
+    return writesVtu && (choice.all || std::find(choice.names.begin(), choice.names.end(), name) !=
+                                           choice.names.end());
+  };
+  return {wanted("distortion"), wanted("rotation_angle"), wanted("target_residual")};
+}
+
 std::vector<NamedArray> selectQualityArrays(const std::vector<NamedArray>& cellData,
                                             const QualityArrays& choice, const std::string& where) {
   if (choice.all) return cellData;

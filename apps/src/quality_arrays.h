@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "tetblend/blending/quality.h"
 #include "tetblend/meshing/mesh_data_arrays.h"
 
 namespace tetblend::cli {
@@ -24,6 +25,11 @@ QualityArrays parseQualityArrays(const std::string& text, const std::string& wha
 
 /// "all", "none" or the names joined by commas: equal choices give equal text.
 std::string qualityArraysText(const QualityArrays& choice);
+
+/// The per-tet figures a blend computes for `choice` beyond volume ratio and
+/// inversion: those whose array is written, none when no .vtu is
+/// (`writesVtu` false: a surface output).
+QualityFigures qualityFigures(const QualityArrays& choice, bool writesVtu);
 
 /// The arrays of `cellData` that `choice` keeps, in cellData's order.
 /// InputError naming `where` when a named array is not among them (the

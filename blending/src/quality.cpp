@@ -1,15 +1,13 @@
 #include "tetblend/blending/quality.h"
 
 #include <Eigen/LU>
-#include <Eigen/SVD>
 #include <cmath>
 #include <limits>
 #include <sstream>
 
 #include "blend_common.h"
+#include "tetblend/blending/tet_distortion.h"
 #include "tetblend/core/error.h"
-#include "tetblend/core/polar.h"
-#include "tetblend/core/so3.h"
 #include "tetblend/core/tet_geometry.h"
 
 namespace tetblend {
@@ -37,7 +35,7 @@ QualityStats stats(const std::vector<double>& values) {
 }  // namespace
 
 TetQuality tetQuality(const TetMesh& rest, const RestTetData& restData, const Vertices& result,
-                      const std::vector<Eigen::Matrix3d>& targets) {
+                      const std::vector<Eigen::Matrix3d>& targets, const QualityFigures& figures) {
   const int count = static_cast<int>(rest.tets.rows());
   if (result.rows() != rest.vertices.rows() || static_cast<int>(restData.volumes.size()) != count ||
       (!targets.empty() && static_cast<int>(targets.size()) != count)) {
@@ -50,18 +48,21 @@ TetQuality tetQuality(const TetMesh& rest, const RestTetData& restData, const Ve
   TetQuality q;
   q.inverted.resize(count);
   q.volumeRatio.resize(count);
-  q.stitchResidual.resize(count);
-  q.conditionNumber.resize(count);
-  q.rotationAngle.resize(count);
+  if (figures.targetResidual) q.stitchResidual.resize(count);
+  if (figures.distortion) q.conditionNumber.resize(count);
+  if (figures.rotationAngle) q.rotationAngle.resize(count);
+  const bool decompose = figures.distortion || figures.rotationAngle;
   blend_detail::forEachTet(count, [&](int j) {
     const Eigen::Matrix3d f = tetEdgeMatrix(result, rest.tets.row(j)) * restData.inverseEdges[j];
     const double det = f.determinant();
     q.inverted[j] = det <= 0.0 ? 1 : 0;
     q.volumeRatio[j] = det;
-    q.stitchResidual[j] = targets.empty() ? kNaN : (f - targets[j]).norm();
-    const Eigen::Vector3d sigma = Eigen::JacobiSVD<Eigen::Matrix3d>(f).singularValues();
-    q.conditionNumber[j] = sigma(2) > 0.0 ? sigma(0) / sigma(2) : kInfinity;
-    q.rotationAngle[j] = det > 0.0 ? so3Log(polarDecompose(f).rotation).norm() : kNaN;
+    if (figures.targetResidual)
+      q.stitchResidual[j] = targets.empty() ? kNaN : (f - targets[j]).norm();
+    if (!decompose) return;
+    const TetDistortion d = tetDistortion(f, det);
+    if (figures.distortion) q.conditionNumber[j] = d.conditionNumber;
+    if (figures.rotationAngle) q.rotationAngle[j] = d.rotationAngle;
   });
   return q;
 }

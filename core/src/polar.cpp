@@ -107,11 +107,12 @@ PolarDecomposition polarDecompose(const Eigen::Matrix3d& a) {
 
 namespace polar_detail {
 
-bool polarLogClosedForm(const Eigen::Matrix3d& a, PolarLogDecomposition& out) {
+bool svdClosedForm(const Eigen::Matrix3d& a, Eigen::Matrix3d& u, Eigen::Vector3d& sigma,
+                   Eigen::Matrix3d& v) {
   const Eigen::Matrix3d m = a.transpose() * a;
   const Eigen::Vector3d mu = symEigenvalues(m);
   if (!(mu(2) > 0.0) || !(mu(0) <= kClosedFormMaxCond * kClosedFormMaxCond * mu(2))) return false;
-  Eigen::Matrix3d v = Eigen::Matrix3d::Identity();
+  v.setIdentity();
   if (mu(0) > mu(2)) {
     // The eigenvalue farther from the middle one is separated from the other
     // two by at least half the spread: its eigenvector is well determined.
@@ -156,17 +157,20 @@ bool polarLogClosedForm(const Eigen::Matrix3d& a, PolarLogDecomposition& out) {
     }
   }
   const Eigen::Matrix3d av = a * v;
-  const Eigen::Vector3d sigma(av.col(0).norm(), av.col(1).norm(), av.col(2).norm());
-  Eigen::Matrix3d u;
+  sigma = Eigen::Vector3d(av.col(0).norm(), av.col(1).norm(), av.col(2).norm());
   u.col(0) = av.col(0) / sigma(0);
   const Eigen::Vector3d u1 = av.col(1) - u.col(0).dot(av.col(1)) * u.col(0);
   u.col(1) = u1.normalized();
   u.col(2) = u.col(0).cross(u.col(1));
   const Eigen::Matrix3d residual = a - u * sigma.asDiagonal() * v.transpose();
-  if (!(residual.squaredNorm() <=
-        kClosedFormMaxResidual * kClosedFormMaxResidual * a.squaredNorm())) {
-    return false;
-  }
+  return residual.squaredNorm() <=
+         kClosedFormMaxResidual * kClosedFormMaxResidual * a.squaredNorm();
+}
+
+bool polarLogClosedForm(const Eigen::Matrix3d& a, PolarLogDecomposition& out) {
+  Eigen::Matrix3d u, v;
+  Eigen::Vector3d sigma;
+  if (!svdClosedForm(a, u, sigma, v)) return false;
   out.rotation = u * v.transpose();
   const Eigen::Matrix3d logS = v * sigma.array().log().matrix().asDiagonal() * v.transpose();
   out.stretchLog = 0.5 * (logS + logS.transpose());

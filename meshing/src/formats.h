@@ -8,6 +8,7 @@
 
 #include "tetblend/core/mesh_types.h"
 #include "tetblend/meshing/mesh_data_arrays.h"
+#include "tetblend/meshing/vtk_compression.h"
 
 namespace tetblend::detail {
 
@@ -26,10 +27,12 @@ SurfaceMesh readVtp(const std::string& path);
 /// `inputVertexIndex`, when not empty, is stored as the int point array
 /// "input_vertex_index" (one entry per vertex).
 void writeVtp(const std::string& path, const SurfaceMesh& mesh, const MeshDataArrays& data,
-              const std::vector<int>& inputVertexIndex = {});
+              const std::vector<int>& inputVertexIndex = {},
+              const VtkCompression& compression = {});
 
 TetMesh readVtu(const std::string& path);
-void writeVtu(const std::string& path, const TetMesh& mesh, const MeshDataArrays& data);
+void writeVtu(const std::string& path, const TetMesh& mesh, const MeshDataArrays& data,
+              const VtkCompression& compression = {});
 
 /// `path` ends in .node or .ele; both files are read or written.
 TetMesh readTetGen(const std::string& path);

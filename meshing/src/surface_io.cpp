@@ -21,7 +21,7 @@ void writeSurface(const std::string& path, const SurfaceMesh& mesh, const MeshDa
                   const SurfaceWriteOptions& options) {
   const std::string ext = detail::lowerExtension(path);
   if (ext == ".vtp") {
-    detail::writeVtp(path, mesh, data);
+    detail::writeVtp(path, mesh, data, {}, options.vtp);
     return;
   }
   if (!data.pointData.empty() || !data.cellData.empty()) {

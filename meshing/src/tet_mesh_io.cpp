@@ -19,10 +19,11 @@ TetMesh readTetMesh(const std::string& path) {
                    "'; use .vtu, .node/.ele or .mesh");
 }
 
-void writeTetMesh(const std::string& path, const TetMesh& mesh, const MeshDataArrays& data) {
+void writeTetMesh(const std::string& path, const TetMesh& mesh, const MeshDataArrays& data,
+                  const VtkCompression& compression) {
   const std::string ext = detail::lowerExtension(path);
   if (ext == ".vtu") {
-    detail::writeVtu(path, mesh, data);
+    detail::writeVtu(path, mesh, data, compression);
     return;
   }
   if (!data.pointData.empty() || !data.cellData.empty()) {

@@ -1,8 +1,8 @@
 // VTK XML PolyData (.vtp) and UnstructuredGrid (.vtu) through VTK's own
 // readers and writers. VTK reports problems through ErrorEvent/WarningEvent;
 // an observer collects them (so nothing is printed) and they become
-// InputError. Files are written binary appended (raw, not base64), zlib
-// compressed, with float64 points.
+// InputError. Files are written binary appended (raw, not base64),
+// compressed as asked (VtkCompression), with float64 points.
 
 #include <cmath>
 #include <filesystem>
@@ -30,6 +30,7 @@
 #include <vtkXMLPolyDataWriter.h>
 #include <vtkXMLUnstructuredGridReader.h>
 #include <vtkXMLUnstructuredGridWriter.h>
+#include <vtkXMLWriterBase.h>
 
 #include "formats.h"
 #include "tetblend/core/error.h"
@@ -166,15 +167,29 @@ void addArrays(vtkDataSetAttributes* attributes, const std::vector<NamedArray>& 
   }
 }
 
+int vtkCompressorType(VtkCompressor compressor) {
+  switch (compressor) {
+    case VtkCompressor::lz4:
+      return vtkXMLWriterBase::LZ4;
+    case VtkCompressor::none:
+      return vtkXMLWriterBase::NONE;
+    case VtkCompressor::zlib:
+      break;
+  }
+  return vtkXMLWriterBase::ZLIB;
+}
+
 template <typename Writer, typename Data>
-void runWriter(const std::string& path, Data* data) {
+void runWriter(const std::string& path, Data* data, const VtkCompression& compression) {
   writeFileAtomically(path, [&](const std::string& tempPath) {
     auto writer = vtkSmartPointer<Writer>::New();
     const auto messages = observe(writer);
     writer->SetInputData(data);
     writer->SetDataModeToAppended();
     writer->EncodeAppendedDataOff();
-    writer->SetCompressorTypeToZLib();
+    writer->SetCompressorType(vtkCompressorType(compression.compressor));
+    if (compression.compressor != VtkCompressor::none)
+      writer->SetCompressionLevel(compression.level);
     writer->SetFileName(tempPath.c_str());
     if (writer->Write() != 1 || !messages->text.empty()) {
       throw InputError(path + ": VTK could not write the file (" + messages->text +
@@ -260,7 +275,7 @@ TetMesh readVtu(const std::string& path) {
 }
 
 void writeVtp(const std::string& path, const SurfaceMesh& mesh, const MeshDataArrays& data,
-              const std::vector<int>& inputVertexIndex) {
+              const std::vector<int>& inputVertexIndex, const VtkCompression& compression) {
   checkMeshForWriting(mesh, path);
   refuseEmpty(mesh.vertices.rows(), mesh.triangles.rows(), path);
   auto poly = vtkSmartPointer<vtkPolyData>::New();
@@ -284,10 +299,11 @@ void writeVtp(const std::string& path, const SurfaceMesh& mesh, const MeshDataAr
   }
   addArrays(poly->GetPointData(), data.pointData, mesh.vertices.rows(), path, "point", pointNames);
   addArrays(poly->GetCellData(), data.cellData, mesh.triangles.rows(), path, "cell", cellNames);
-  runWriter<vtkXMLPolyDataWriter>(path, poly.Get());
+  runWriter<vtkXMLPolyDataWriter>(path, poly.Get(), compression);
 }
 
-void writeVtu(const std::string& path, const TetMesh& mesh, const MeshDataArrays& data) {
+void writeVtu(const std::string& path, const TetMesh& mesh, const MeshDataArrays& data,
+              const VtkCompression& compression) {
   checkMeshForWriting(mesh, path);
   refuseEmpty(mesh.vertices.rows(), mesh.tets.rows(), path);
   auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
@@ -303,7 +319,7 @@ void writeVtu(const std::string& path, const TetMesh& mesh, const MeshDataArrays
   std::set<std::string> cellNames;
   addArrays(grid->GetPointData(), data.pointData, mesh.vertices.rows(), path, "point", pointNames);
   addArrays(grid->GetCellData(), data.cellData, mesh.tets.rows(), path, "cell", cellNames);
-  runWriter<vtkXMLUnstructuredGridWriter>(path, grid.Get());
+  runWriter<vtkXMLUnstructuredGridWriter>(path, grid.Get(), compression);
 }
 
 }  // namespace tetblend::detail

@@ -55,21 +55,28 @@ BlendResult checkedBlend(const ShapeBlender& blender, const std::vector<double>&
 }
 
 BlendedShape blendShape(const ShapeBlender& blender, const ModelData& model,
-                        const std::vector<double>& weights, BlendMethod method) {
+                        const std::vector<double>& weights, BlendMethod method,
+                        const QualityFigures& figures) {
+  return blendShape(blender, model, restTetData(model.rest), weights, method, figures);
+}
+
+BlendedShape blendShape(const ShapeBlender& blender, const ModelData& model,
+                        const RestTetData& restData, const std::vector<double>& weights,
+                        BlendMethod method, const QualityFigures& figures) {
   BlendResult result = checkedBlend(blender, weights, method);
   const bool excludes = !model.excludedTets.empty();
-  const TetQuality q = excludes ? tetQuality(model.rest, restTetData(model.rest), result.vertices,
-                                             targetsOfAllTets(model, result.targets))
-                                : tetQuality(blender.rest(), blender.stitch().restData(),
-                                             result.vertices, result.targets);
+  // Without excluded tets the blender's rest is the model's, maps included.
+  const TetQuality q =
+      tetQuality(model.rest, restData, result.vertices,
+                 excludes ? targetsOfAllTets(model, result.targets) : result.targets, figures);
   BlendedShape shape;
   shape.quality = summarizeQuality(q);
   shape.cellData.push_back(cellArray("volume_ratio", q.volumeRatio));
   shape.cellData.push_back(
       cellArray("inverted", std::vector<double>(q.inverted.begin(), q.inverted.end())));
-  shape.cellData.push_back(cellArray("distortion", q.conditionNumber));
-  shape.cellData.push_back(cellArray("rotation_angle", q.rotationAngle));
-  if (!result.targets.empty())
+  if (figures.distortion) shape.cellData.push_back(cellArray("distortion", q.conditionNumber));
+  if (figures.rotationAngle) shape.cellData.push_back(cellArray("rotation_angle", q.rotationAngle));
+  if (figures.targetResidual && !result.targets.empty())
     shape.cellData.push_back(cellArray("target_residual", q.stitchResidual));
   if (excludes) {
     std::vector<double> excluded(static_cast<std::size_t>(model.rest.tets.rows()), 0.0);

@@ -21,12 +21,12 @@ TetMesh stitchedMesh(const ModelData& model) {
 }
 
 ShapeBlender makeBlender(const ModelData& model, const std::vector<BlendMethod>& methods,
-                         bool rotationConsistency, bool nonlinearStitch) {
+                         bool rotationConsistency, bool nonlinearStitch, bool keepTargets) {
   ShapeBlenderOptions options;
   options.methods = methods;
   options.rotationConsistency = rotationConsistency;
   options.nonlinearStitch = nonlinearStitch;
-  options.keepTargets = true;  // the target_residual quality array needs the blended maps
+  options.keepTargets = keepTargets;
   return ShapeBlender(stitchedMesh(model), model.examples, options);
 }
 

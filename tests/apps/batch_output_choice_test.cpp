@@ -14,6 +14,17 @@ using Names = std::set<std::string>;
 
 using nlohmann::json;
 
+/// The quality figures of the first job of dir/summary.json.
+Names summaryFigures(const fs::path& dir) {
+  const json summary = json::parse(slurp(dir / "summary.json"));
+  Names names;
+  for (const auto& item : summary["jobs"][0]["quality"].items()) names.insert(item.key());
+  return names;
+}
+
+// The figures a summary always has: a determinant per tet gives them.
+const Names kVolumeFigures{"inverted_tets", "max_volume_ratio", "min_volume_ratio"};
+
 class BatchOutputChoice : public ::testing::Test {
  protected:
   void SetUp() override {
@@ -83,6 +94,8 @@ TEST_F(BatchOutputChoice, SurfaceOnlyJobsWriteTheSurfaceOfTheFullJobsAndNoVtu) {
   EXPECT_EQ(pvd.find(".vtu"), std::string::npos) << pvd;
   const json s = json::parse(slurp(out / "summary.json"));
   EXPECT_EQ(s["jobs"][0]["files"], json::array({"surf_out/a.vtp"}));
+  // No .vtu, so none of the costlier figures is computed.
+  EXPECT_EQ(summaryFigures(out), kVolumeFigures);
 
   r = batchFrom(dir_, spec.string());  // a re-run finds the .vtp jobs done
   ASSERT_EQ(r.code, 0) << r.err;
@@ -90,21 +103,30 @@ TEST_F(BatchOutputChoice, SurfaceOnlyJobsWriteTheSurfaceOfTheFullJobsAndNoVtu) {
 }
 
 TEST_F(BatchOutputChoice, QualityArraysKeyChoosesTheCellArraysAndRerunsWhenChanged) {
+  const Names distortion{"mean_distortion", "max_distortion"};
+  Names all = kVolumeFigures;
+  for (const char* n : {"mean_distortion", "max_distortion", "mean_rotation_angle",
+                        "max_rotation_angle", "mean_target_residual", "max_target_residual"})
+    all.insert(n);
+  Names volumeAndDistortion = kVolumeFigures;
+  volumeAndDistortion.insert(distortion.begin(), distortion.end());
   const struct {
     json value;
     Names expected;
+    Names figures;  // of the summary: only those of written arrays
   } cases[] = {
-      {"none", {}},
-      {json::array({"inverted", "volume_ratio"}), {"inverted", "volume_ratio"}},
-      {"distortion", {"distortion"}},
-      {json::array(), {}},
-      {"all", {"volume_ratio", "inverted", "distortion", "rotation_angle", "target_residual"}},
+      {"none", {}, kVolumeFigures},
+      {json::array({"inverted", "volume_ratio"}), {"inverted", "volume_ratio"}, kVolumeFigures},
+      {"distortion", {"distortion"}, volumeAndDistortion},
+      {json::array(), {}, kVolumeFigures},
+      {"all", {"volume_ratio", "inverted", "distortion", "rotation_angle", "target_residual"}, all},
   };
   for (const auto& c : cases) {
     SCOPED_TRACE("quality_arrays " + c.value.dump());
     const RunResult r = batchFrom(dir_, writeSpec("q", {{"quality_arrays", c.value}}).string());
     ASSERT_EQ(r.code, 0) << r.err;
     EXPECT_EQ(cellArrayNames(readVtu(dir_ / "specs" / "q_out" / "a.vtu")), c.expected);
+    EXPECT_EQ(summaryFigures(dir_ / "specs" / "q_out"), c.figures);
   }
   // The same choice written another way is the same fingerprint: nothing reruns.
   ASSERT_EQ(

@@ -56,5 +56,23 @@ TEST(Quality, InvertedAndStretchedTetsAreReported) {
   EXPECT_THROW(tetQuality(rest, restTetData(rest), Vertices(2, 3), {}), InputError);
 }
 
+TEST(Quality, FiguresNotAskedForAreNotComputed) {
+  const TetMesh rest = boxTetMesh(2, 1, 1, Eigen::Vector3d::Ones());
+  Vertices x = rest.vertices;
+  x.col(1) *= 2.0;
+  const std::vector<Eigen::Matrix3d> targets(rest.tets.rows(), Eigen::Matrix3d::Identity());
+  const TetQuality all = tetQuality(rest, restTetData(rest), x, targets);
+  const TetQuality some = tetQuality(rest, restTetData(rest), x, targets, {false, true, false});
+  EXPECT_TRUE(some.conditionNumber.empty());
+  EXPECT_TRUE(some.stitchResidual.empty());
+  EXPECT_EQ(some.rotationAngle, all.rotationAngle);
+  EXPECT_EQ(some.volumeRatio, all.volumeRatio);
+  EXPECT_EQ(some.inverted, all.inverted);
+  const QualitySummary s = summarizeQuality(some);
+  EXPECT_TRUE(std::isnan(s.conditionNumber.max));
+  EXPECT_TRUE(std::isnan(s.stitchResidual.mean));
+  EXPECT_NEAR(s.volumeRatio.min, 2.0, kTolerance);
+}
+
 }  // namespace
 }  // namespace tetblend

@@ -11,8 +11,19 @@
 
 namespace tetblend {
 
-/// Per-tet quality arrays (#T entries each) of a result x against the rest.
-/// F_j = grad_j(x) is the deformation gradient rest -> result.
+/// Which per-tet figures tetQuality computes besides volume ratio and
+/// inversion (always computed: a determinant per tet). Distortion and
+/// rotation angle take a singular value or polar decomposition of F_j
+/// (tetDistortion); the stitch residual needs the blended maps kept.
+struct QualityFigures {
+  bool distortion = true;      ///< TetQuality::conditionNumber
+  bool rotationAngle = true;   ///< TetQuality::rotationAngle
+  bool targetResidual = true;  ///< TetQuality::stitchResidual
+};
+
+/// Per-tet quality arrays (#T entries each; empty when not asked for, see
+/// QualityFigures) of a result x against the rest. F_j = grad_j(x) is the
+/// deformation gradient rest -> result.
 struct TetQuality {
   std::vector<char> inverted;          ///< 1 where det F_j <= 0
   std::vector<double> volumeRatio;     ///< det F_j = vol_result / vol_rest (signed)
@@ -44,12 +55,15 @@ struct QualitySummary {
 
 /// Quality of `result` (#V by 3) for `rest` (#V vertices, #T tets) with rest
 /// data `restData` (restTetData(rest)) and the blended maps `targets` (#T,
-/// or empty for a blend without maps, e.g. vertex-linear). Parallel over
-/// tets. Throws InputError on size mismatches.
+/// or empty for a blend without maps, e.g. vertex-linear), with the figures
+/// `figures` asks for. Parallel over tets. Throws InputError on size
+/// mismatches.
 TetQuality tetQuality(const TetMesh& rest, const RestTetData& restData, const Vertices& result,
-                      const std::vector<Eigen::Matrix3d>& targets);
+                      const std::vector<Eigen::Matrix3d>& targets,
+                      const QualityFigures& figures = {});
 
-/// Counts and min/max/mean of every array of `quality`.
+/// Counts and min/max/mean of every array of `quality` (NaN stats for an
+/// array not computed).
 QualitySummary summarizeQuality(const TetQuality& quality);
 
 }  // namespace tetblend

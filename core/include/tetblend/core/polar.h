@@ -74,6 +74,14 @@ constexpr double kClosedFormMaxResidual = 32 * 2.220446049250313e-16;
 /// leaves `out` unspecified) if cond(A) > kClosedFormMaxCond or the residual
 /// exceeds kClosedFormMaxResidual.
 bool polarLogClosedForm(const Eigen::Matrix3d& a, PolarLogDecomposition& out);
+
+/// The factors of polarLogClosedForm: A = U diag(sigma) V^T with U, V
+/// rotations and sigma_i = |A v_i| (in V's column order: descending up to
+/// round-off), under the same acceptance (cond(A) <= kClosedFormMaxCond,
+/// residual <= kClosedFormMaxResidual |A|_F); false when declined (the
+/// outputs are then unspecified). The polar rotation is U V^T.
+bool svdClosedForm(const Eigen::Matrix3d& a, Eigen::Matrix3d& u, Eigen::Vector3d& sigma,
+                   Eigen::Matrix3d& v);
 }  // namespace polar_detail
 
 }  // namespace tetblend

@@ -14,6 +14,7 @@
 
 #include "tetblend/core/mesh_types.h"
 #include "tetblend/meshing/mesh_data_arrays.h"
+#include "tetblend/meshing/vtk_compression.h"
 
 namespace tetblend {
 
@@ -32,6 +33,8 @@ struct SurfaceWriteOptions {
   /// PLY only: binary little endian with double coordinates (true, exact and
   /// compact) or ascii (false).
   bool plyBinary = true;
+  /// VTP only: the compressor of the appended data.
+  VtkCompression vtp;
 };
 
 /// Writes `mesh` to `path` (.obj, .off, .ply or .vtp, by extension),
@@ -40,7 +43,7 @@ struct SurfaceWriteOptions {
 /// round-trips positions exactly. `data` (point and cell arrays, see
 /// MeshDataArrays) is only stored by .vtp; passing arrays for another format
 /// throws InputError rather than dropping them. .vtp is written as binary
-/// appended, zlib compressed data.
+/// appended data compressed by options.vtp (zlib by default).
 /// Throws InputError for an unknown extension, indices out of range,
 /// inconsistent array lengths or an I/O failure; the old file is then kept.
 void writeSurface(const std::string& path, const SurfaceMesh& mesh, const MeshDataArrays& data = {},

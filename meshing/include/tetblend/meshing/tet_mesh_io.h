@@ -14,6 +14,7 @@
 
 #include "tetblend/core/mesh_types.h"
 #include "tetblend/meshing/mesh_data_arrays.h"
+#include "tetblend/meshing/vtk_compression.h"
 
 namespace tetblend {
 
@@ -25,17 +26,20 @@ namespace tetblend {
 TetMesh readTetMesh(const std::string& path);
 
 /// Writes `mesh` to `path`, atomically (see writeFileAtomically):
-///   .vtu          binary appended, zlib compressed, cells VTK_TETRA, with the
-///                 point arrays (one tuple per vertex) and cell arrays (one
-///                 tuple per tet) of `data`;
+///   .vtu          binary appended, compressed by `compression` (zlib by
+///                 default), cells VTK_TETRA, with the point arrays (one
+///                 tuple per vertex) and cell arrays (one tuple per tet) of
+///                 `data`;
 ///   .node / .ele  both TetGen files (0-based), positions in shortest exact
 ///                 decimal form;
 ///   .mesh         Medit ascii, version 2 (double precision), 1-based.
-/// `data` is only stored by .vtu; arrays for another format throw InputError.
+/// `data` and `compression` are only used by .vtu; arrays for another format
+/// throw InputError.
 /// Throws InputError for an unknown extension, indices out of range, bad
 /// arrays (empty, wrong length, name empty/with spaces/duplicated) or an I/O
 /// failure; the old file is then kept.
-void writeTetMesh(const std::string& path, const TetMesh& mesh, const MeshDataArrays& data = {});
+void writeTetMesh(const std::string& path, const TetMesh& mesh, const MeshDataArrays& data = {},
+                  const VtkCompression& compression = {});
 
 /// Writes the boundary surface of `mesh` to `path` (.vtp, binary appended,
 /// zlib compressed), atomically. The triangles are those of boundarySurface

@@ -35,10 +35,21 @@ BlendResult checkedBlend(const ShapeBlender& blender, const std::vector<double>&
 /// the methods with per-tet targets, "target_residual" ||F_j - B_j||_F (how far the stitch had to
 /// move tet j from its blended map; 0 where the blended maps were already compatible; NaN for
 /// excluded tets) and, when the model has excluded tets, "excluded" (1 for the tets left out of the
-/// stitch). The nonlinear stitch runs when the blender was made with it (makeBlender). Safe to
-/// call from several threads on one blender, as ShapeBlender::blend is.
+/// stitch). "distortion", "rotation_angle" and "target_residual" (and their summary figures) are
+/// made only when `figures` asks for them: they are most of the quality's cost (target_residual
+/// also needs a blender that keeps its maps: makeBlender's keepTargets). The nonlinear stitch runs
+/// when the blender was made with it (makeBlender). Safe to call from several threads on one
+/// blender, as ShapeBlender::blend is.
 BlendedShape blendShape(const ShapeBlender& blender, const ModelData& model,
-                        const std::vector<double>& weights, BlendMethod method);
+                        const std::vector<double>& weights, BlendMethod method,
+                        const QualityFigures& figures = {});
+
+/// blendShape with the rest data of the quality given: `restData` =
+/// restTetData(model.rest), which every blend of the model shares (computing
+/// it takes an inverse per tet), so many blends compute it once.
+BlendedShape blendShape(const ShapeBlender& blender, const ModelData& model,
+                        const RestTetData& restData, const std::vector<double>& weights,
+                        BlendMethod method, const QualityFigures& figures = {});
 
 /// The names of every cell array blendShape can make, in its order:
 /// volume_ratio, inverted, distortion, rotation_angle, target_residual,
@@ -49,8 +60,8 @@ const std::vector<std::string>& blendCellArrayNames();
 /// min/max_volume_ratio, inverted_tets, mean/max_target_residual,
 /// mean/max_distortion, mean/max_rotation_angle (radians). A value that is
 /// not finite (no targets for vertex-linear; a flat tet makes the distortion
-/// infinite) is left out, so tables show it as missing; inverted_tets tells
-/// the flat and inverted tets apart.
+/// infinite; a figure not computed) is left out, so tables show it as
+/// missing; inverted_tets tells the flat and inverted tets apart.
 std::vector<std::pair<std::string, double>> qualityColumns(const QualitySummary& quality);
 
 }  // namespace tetblend
