@@ -116,7 +116,12 @@ void checkBlockHeader(const std::string& path, std::string_view header, std::uin
     damaged(path, "a compressed array declares no block but a last block of " +
                       std::to_string(lastSize) + " bytes");
   }
-  if (blockSize / layout.ratio > room || lastSize / layout.ratio > room) {
+  // The nominal block size is only stored when some block is full: an array
+  // shorter than one block has one partial block of lastSize bytes, and its
+  // header still names the writer's 32 KB (which an LZ4 array of 60 bytes
+  // cannot hold).
+  const bool fullBlock = blocks > 1 || (blocks == 1 && lastSize == 0);
+  if ((fullBlock && blockSize / layout.ratio > room) || lastSize / layout.ratio > room) {
     damaged(path, "a compressed array declares blocks of " + std::to_string(blockSize) +
                       " bytes in " + std::to_string(room) + " bytes");
   }
