@@ -43,10 +43,11 @@ class MpiWorld final : public BatchWorld {
     std::_Exit(1);
   }
 
-  void start(bool ok, const std::vector<std::int64_t>& pending) override {
-    long long count = ok ? static_cast<long long>(pending.size()) : -1;
-    MPI_Bcast(&count, 1, MPI_LONG_LONG, 0, MPI_COMM_WORLD);
-    if (count <= 0) return;
+  void start(bool ok, std::uint64_t inputs, const std::vector<std::int64_t>& pending) override {
+    unsigned long long head[2] = {ok ? pending.size() : ~0ull, inputs};
+    MPI_Bcast(head, 2, MPI_UNSIGNED_LONG_LONG, 0, MPI_COMM_WORLD);
+    const auto count = static_cast<long long>(pending.size());
+    if (!ok || count == 0) return;
     std::vector<long long> jobs(pending.begin(), pending.end());
     MPI_Bcast(jobs.data(), static_cast<int>(count), MPI_LONG_LONG, 0, MPI_COMM_WORLD);
   }
@@ -78,10 +79,12 @@ class MpiWorld final : public BatchWorld {
     }
   }
 
-  bool awaitStart(std::vector<std::int64_t>& pending) override {
-    long long count = 0;
-    MPI_Bcast(&count, 1, MPI_LONG_LONG, 0, MPI_COMM_WORLD);
-    if (count < 0) return false;
+  bool awaitStart(std::uint64_t& inputs, std::vector<std::int64_t>& pending) override {
+    unsigned long long head[2] = {0, 0};
+    MPI_Bcast(head, 2, MPI_UNSIGNED_LONG_LONG, 0, MPI_COMM_WORLD);
+    if (head[0] == ~0ull) return false;
+    inputs = head[1];
+    const auto count = static_cast<long long>(head[0]);
     std::vector<long long> jobs(static_cast<std::size_t>(count));
     if (count > 0)
       MPI_Bcast(jobs.data(), static_cast<int>(count), MPI_LONG_LONG, 0, MPI_COMM_WORLD);

@@ -6,7 +6,9 @@
 // files and send each job's outcome back with their next request.
 //
 // Messages (all to or from rank 0):
-//   start     broadcast from rank 0: the pending job indices, or "no run"
+//   start     broadcast from rank 0: the pending job indices and a hash of
+//             the spec's and the model's bytes (a rank that reads other
+//             bytes, e.g. a stale copy on a node, runs nothing), or "no run"
 //             when rank 0 failed before handing out work;
 //   request   worker -> 0: the outcome of the job it just finished (or
 //             nothing), asking for another; 0 answers with a job index or -1;
@@ -38,8 +40,10 @@ class BatchWorld {
   [[noreturn]] virtual void abort(const std::string& why) = 0;
 
   // Rank 0.
-  /// Broadcasts the pending job indices; `ok` false: no run (rank 0 failed).
-  virtual void start(bool ok, const std::vector<std::int64_t>& pending) = 0;
+  /// Broadcasts the pending job indices and `inputs` (a hash of the spec's
+  /// and the model's bytes, which every rank must see alike); `ok` false: no
+  /// run (rank 0 failed).
+  virtual void start(bool ok, std::uint64_t inputs, const std::vector<std::int64_t>& pending) = 0;
   /// Serves the other ranks until each said bye: for a request, calls
   /// onOutcome(rank, message) when it carries one, then answers nextJob()
   /// (a job index, or -1 for "no more"); for a bye with a reason, calls
@@ -50,7 +54,7 @@ class BatchWorld {
 
   // Other ranks.
   /// Waits for rank 0's start; false when there is no run.
-  virtual bool awaitStart(std::vector<std::int64_t>& pending) = 0;
+  virtual bool awaitStart(std::uint64_t& inputs, std::vector<std::int64_t>& pending) = 0;
   /// Sends `outcome` ("" for none) and returns the next job index, or -1.
   /// Thread-safe (serialised inside).
   virtual std::int64_t requestJob(const std::string& outcome) = 0;

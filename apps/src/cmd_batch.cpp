@@ -65,6 +65,7 @@
 #include "tetblend/pipeline/blended_shape.h"
 #include "tetblend/pipeline/format_number.h"
 #include "tetblend/pipeline/make_blender.h"
+#include "tetblend/pipeline/model_file.h"
 
 namespace tetblend::cli {
 
@@ -310,22 +311,36 @@ std::size_t decodeOutcome(const std::string& text, std::vector<JobOutcome>& outc
   return i;
 }
 
+/// FNV-1a 64 of the spec's and the model's file hashes: what every rank must
+/// read alike for the job indices to mean the same jobs.
+std::uint64_t inputsHash(const BatchSpec& spec, std::uint64_t modelHash) {
+  const std::uint64_t h[2] = {fileHash(spec.specPath), modelHash};
+  return fnv1a64(reinterpret_cast<const unsigned char*>(h), sizeof h);
+}
+
 /// A rank other than 0: reads the spec and the model, waits for rank 0's
 /// start, then blends and writes the jobs it is handed until there are none.
 /// It writes nothing else and prints nothing; what goes wrong goes to rank 0.
 void runWorkerRank(const BatchArgs& a, BatchWorld& world) {
   std::string setupError;
   BatchSetup setup;
+  std::uint64_t inputs = 0;
   try {
     setup = readSetup(a);
     setup.model = readModelFile(setup.spec.modelPath);
+    inputs = inputsHash(setup.spec, fileHash(setup.spec.modelPath));
   } catch (const std::exception& e) {
     setupError = e.what();
   }
   std::vector<std::int64_t> pending;
-  if (!world.awaitStart(pending)) return;  // rank 0 failed and says why
+  std::uint64_t rank0Inputs = 0;
+  if (!world.awaitStart(rank0Inputs, pending)) return;  // rank 0 failed and says why
   if (pending.empty()) return world.bye("");
   if (!setupError.empty()) return world.bye(setupError);
+  if (inputs != rank0Inputs) {
+    return world.bye("its spec " + a.spec + " or model " + setup.spec.modelPath +
+                     " has other bytes than rank 0's");
+  }
   std::unique_ptr<JobRunner> runner;
   try {
     runner = std::make_unique<JobRunner>(setup,
@@ -366,7 +381,7 @@ struct StartGuard {
   BatchWorld* world;
   bool started = false;
   ~StartGuard() {
-    if (world != nullptr && !started) world->start(false, {});
+    if (world != nullptr && !started) world->start(false, 0, {});
   }
 };
 
@@ -421,7 +436,8 @@ void runBatch(const BatchArgs& a) {
 
   Journal journal(spec.outputDir, kept);
   if (world) {
-    world->start(true, std::vector<std::int64_t>(pendingJobs.begin(), pendingJobs.end()));
+    world->start(true, inputsHash(spec, modelHash),
+                 std::vector<std::int64_t>(pendingJobs.begin(), pendingJobs.end()));
     guard.started = true;
   }
   if (!pendingJobs.empty() || world) {
