@@ -128,6 +128,11 @@ void removeStaleTemporaries(const std::string& dir, const std::vector<std::strin
   for (const fs::path& p : stale) fs::remove(p, ec);
 }
 
+void syncOutputs(const std::vector<std::string>& files, const std::string& dir) {
+  for (const std::string& f : files) syncPath(f);
+  syncPath(dir);
+}
+
 void writeText(const std::string& path, const std::string& text) {
   writeFileAtomically(path, [&](const std::string& temp) {
     std::ofstream out(temp);

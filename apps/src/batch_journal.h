@@ -50,6 +50,10 @@ std::map<std::string, nlohmann::json> readJournal(const std::string& path);
 /// a killed run leaves them, and the caller holds the directory's lock.
 void removeStaleTemporaries(const std::string& dir, const std::vector<std::string>& outputs);
 
+/// Syncs each of `files`, then `dir` (the renames into it): a worker rank's
+/// job files are on disk before rank 0 journals them.
+void syncOutputs(const std::vector<std::string>& files, const std::string& dir);
+
 /// Writes `text` to `path` atomically (writeFileAtomically).
 void writeText(const std::string& path, const std::string& text);
 
