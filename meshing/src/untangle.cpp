@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <tuple>
 #include <utility>
 
@@ -346,10 +347,14 @@ class NewtonSolver {
  public:
   bool factorize(const SparseMatrix& matrix) {
     if (!analysed_) {
-      simplicialSolver_.analyzePattern(matrix);
+      simplicialSolver_ = std::make_unique<SimplicialSolver>();
+      simplicialSolver_->analyzePattern(matrix);
 #ifdef TETBLEND_HAVE_CHOLMOD
-      supernodal_ = simplicialSolver_.factorisationFlops() >= kSupernodalFlops;
-      if (supernodal_) supernodalSolver_.analyzePattern(matrix);
+      supernodal_ = simplicialSolver_->factorisationFlops() >= kSupernodalFlops;
+      if (supernodal_) {
+        simplicialSolver_.reset();  // its analysis holds the storage of L
+        supernodalSolver_.analyzePattern(matrix);
+      }
 #endif
       analysed_ = true;
     }
@@ -359,20 +364,20 @@ class NewtonSolver {
       return supernodalSolver_.info() == Eigen::Success;
     }
 #endif
-    simplicialSolver_.factorize(matrix);
-    return simplicialSolver_.info() == Eigen::Success;
+    simplicialSolver_->factorize(matrix);
+    return simplicialSolver_->info() == Eigen::Success;
   }
 
   Eigen::VectorXd solve(const Eigen::VectorXd& rightHandSide) const {
 #ifdef TETBLEND_HAVE_CHOLMOD
     if (supernodal_) return supernodalSolver_.solve(rightHandSide);
 #endif
-    return simplicialSolver_.solve(rightHandSide);
+    return simplicialSolver_->solve(rightHandSide);
   }
 
  private:
   bool analysed_ = false;
-  SimplicialSolver simplicialSolver_;
+  std::unique_ptr<SimplicialSolver> simplicialSolver_;  // null when supernodal
 #ifdef TETBLEND_HAVE_CHOLMOD
   Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower> supernodalSolver_;
   bool supernodal_ = false;
