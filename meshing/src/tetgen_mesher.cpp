@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "half_edge_table.h"
+#include "spatial_order.h"
 #include "tetblend/core/error.h"
 #include "tetblend/core/tet_geometry.h"
 #include "tetblend/meshing/surface_orientation.h"
@@ -288,7 +289,7 @@ TetMesh tetrahedralize(const SurfaceMesh& closedSurface, const TetGenOptions& op
   orientPositively(mesh);
   mesh = keepInside(mesh, closedSurface);
   checkBoundary(mesh, closedSurface);
-  return mesh;
+  return inSpatialOrder(mesh, static_cast<int>(closedSurface.vertices.rows()));
 }
 
 }  // namespace tetblend

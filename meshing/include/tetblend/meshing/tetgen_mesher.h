@@ -47,7 +47,10 @@ struct TetGenOptions {
 /// order; further vertices (Steiner points) lie strictly inside; the boundary
 /// faces of the tets are exactly the input triangles (same orientation, up to
 /// a rotation of the indices within a face); every tet is positively oriented
-/// (det[p1-p0, p2-p0, p3-p0] > 0). TetGen's failures are turned into
+/// (det[p1-p0, p2-p0, p3-p0] > 0). The tets come in spatial order (a Morton
+/// curve of their centroids) and the Steiner points in the order the tets
+/// first use them, so that ranges of tets are compact in space and in
+/// memory (TetGen's own order scatters them). TetGen's failures are turned into
 /// InputError (self-intersection, tiny features, very close facets, invalid
 /// input, or TetGen crashing on the surface) or NumericalError / Error
 /// (internal error, out of memory, no child process) with a message naming
