@@ -73,8 +73,8 @@ double StitchSolver::memoryBytes() const {
   double bytes = static_cast<double>(sizeof(double) * m.rest.vertices.size() +
                                      sizeof(int) * m.rest.tets.size()) +
                  ints(m.component) + ints(m.componentSize) + ints(m.reducedIndex) +
-                 ints(m.freeVertices) + ints(m.chunkTet) + ints(m.chunkLow) + ints(m.chunkHigh) +
-                 static_cast<double>(sizeof(Eigen::Index) * m.chunkOffset.size());
+                 ints(m.freeVertices) + ints(m.chunkTet) + ints(m.chunkRow) + ints(m.cornerRow) +
+                 ints(m.vertexRowStart) + ints(m.vertexRows);
 #ifdef TETBLEND_HAVE_CHOLMOD
   if (m.supernodal) {
     return bytes + m.supernodal->bytes() + ints(m.factorRow) + ints(m.factorVertex);

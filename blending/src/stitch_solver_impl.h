@@ -84,10 +84,15 @@ struct StitchSolver::Impl {
   std::vector<int> componentSize;  // #C vertex counts
   std::vector<int> reducedIndex;   // #V, -1 for pinned vertices (construction only)
   std::vector<int> freeVertices;   // reduced index -> vertex
-  // The tets in stitch_detail::kRhsChunks contiguous ranges [chunkTet[c], chunkTet[c + 1]),
-  // whose corners lie in the vertex ranges [chunkLow[c], chunkHigh[c]).
-  std::vector<int> chunkTet, chunkLow, chunkHigh;
-  std::vector<Eigen::Index> chunkOffset;  // chunk c's rows in the summing buffer
+  // The tets in stitch_detail::kRhsChunks contiguous ranges [chunkTet[c], chunkTet[c + 1]).
+  // Chunk c sums into rows [chunkRow[c], chunkRow[c + 1]) of the summing
+  // buffer, one row per distinct vertex its tets use: corner k of tet j adds
+  // into row cornerRow[4 j + k], and vertex v's rows (one per chunk that
+  // uses it, in chunk order) are vertexRows[vertexRowStart[v] ..
+  // vertexRowStart[v + 1]). Compact whatever the vertex numbering: a range of
+  // tets may use vertices from anywhere in it (surface vertices keep the
+  // user's order).
+  std::vector<int> chunkTet, chunkRow, cornerRow, vertexRowStart, vertexRows;
   StitchBackend backend = StitchBackend::kEigenSimplicialLdlt;
   Eigen::SimplicialLDLT<stitch_detail::SparseMatrix, Eigen::Lower, Eigen::AMDOrdering<int>> ldlt;
 #ifdef TETBLEND_HAVE_CHOLMOD
@@ -138,23 +143,39 @@ struct StitchSolver::Impl {
 
   void buildChunks() {
     const auto tetCount = static_cast<int>(tets().rows());
+    const auto vertexCount = static_cast<int>(rest.vertices.rows());
     const int64_t mapChunks = (tetCount + kTetMapChunk - 1) / kTetMapChunk;
     chunkTet.resize(stitch_detail::kRhsChunks + 1);
-    chunkLow.assign(stitch_detail::kRhsChunks, 0);
-    chunkHigh.assign(stitch_detail::kRhsChunks, 0);
-    chunkOffset.assign(stitch_detail::kRhsChunks + 1, 0);
     for (int c = 0; c <= stitch_detail::kRhsChunks; ++c) {
       chunkTet[c] = std::min(
           tetCount, static_cast<int>(mapChunks * c / stitch_detail::kRhsChunks * kTetMapChunk));
     }
+    // Rows in chunk order, each vertex's first use in a chunk opening a row.
+    chunkRow.assign(stitch_detail::kRhsChunks + 1, 0);
+    cornerRow.resize(4 * static_cast<size_t>(tetCount));
+    std::vector<int> rowInChunk(vertexCount, -1), chunkOfRow(vertexCount, -1);
+    std::vector<std::pair<int, int>> vertexRow;  // (vertex, row), rows ascending
+    int rows = 0;
     for (int c = 0; c < stitch_detail::kRhsChunks; ++c) {
-      if (chunkTet[c] < chunkTet[c + 1]) {
-        const auto block = tets().middleRows(chunkTet[c], chunkTet[c + 1] - chunkTet[c]);
-        chunkLow[c] = block.minCoeff();
-        chunkHigh[c] = block.maxCoeff() + 1;
+      for (int j = chunkTet[c]; j < chunkTet[c + 1]; ++j) {
+        for (int k = 0; k < 4; ++k) {
+          const int v = tets()(j, k);
+          if (chunkOfRow[v] != c) {
+            chunkOfRow[v] = c;
+            rowInChunk[v] = rows++;
+            vertexRow.emplace_back(v, rowInChunk[v]);
+          }
+          cornerRow[4 * static_cast<size_t>(j) + k] = rowInChunk[v];
+        }
       }
-      chunkOffset[c + 1] = chunkOffset[c] + (chunkHigh[c] - chunkLow[c]);
+      chunkRow[c + 1] = rows;
     }
+    vertexRowStart.assign(vertexCount + 1, 0);
+    for (const auto& [v, row] : vertexRow) ++vertexRowStart[v + 1];
+    std::partial_sum(vertexRowStart.begin(), vertexRowStart.end(), vertexRowStart.begin());
+    vertexRows.resize(vertexRow.size());
+    std::vector<int> filled(vertexRowStart.begin(), vertexRowStart.end() - 1);
+    for (const auto& [v, row] : vertexRow) vertexRows[filled[v]++] = row;
   }
 
   const Tets& tets() const { return rest.tets; }
@@ -165,22 +186,21 @@ struct StitchSolver::Impl {
   // Each tet is visited once: C = 6 vol_j B_j D_rest,j^-T holds 6 vol_j B_j g_c
   // for corners 1..3 in its columns, and corner 0 gets minus their sum. The
   // chunks of tets are summed in parallel, each sequentially into its own
-  // vertex-range buffer, kTetMapChunk tets at a time: targets(begin, end,
-  // scratch) returns B_j for those tets (a pointer into a stored field, or
-  // scratch filled by a blender). Every vertex then adds the buffers in chunk
-  // order, so the result does not depend on the schedule or the thread count.
-  // Returns the thread-seconds spent in targets() and in the whole pass.
+  // rows of the buffer (buildChunks), kTetMapChunk tets at a time:
+  // targets(begin, end, scratch) returns B_j for those tets (a pointer into a
+  // stored field, or scratch filled by a blender). Every vertex then adds its
+  // rows in chunk order, so the result does not depend on the schedule or
+  // the thread count. Returns the thread-seconds spent in targets() and in
+  // the whole pass.
   template <typename Targets, typename Rhs>
   std::pair<double, double> assembleRhs(const Targets& targets, const std::vector<int>& rowOf,
                                         stitch_detail::RowMatrix3& buffer, Rhs& rhs) const {
-    buffer.resize(chunkOffset[stitch_detail::kRhsChunks], 3);
+    buffer.resize(chunkRow[stitch_detail::kRhsChunks], 3);
     std::vector<double> targetSeconds(stitch_detail::kRhsChunks, 0.0),
         chunkSeconds(stitch_detail::kRhsChunks, 0.0);
     blend_detail::parallelForFirstError(stitch_detail::kRhsChunks, [&](int c) {
       const auto chunkStart = stitch_detail::Clock::now();
-      auto sums = buffer.middleRows(chunkOffset[c], chunkHigh[c] - chunkLow[c]);
-      sums.setZero();
-      const int low = chunkLow[c];
+      buffer.middleRows(chunkRow[c], chunkRow[c + 1] - chunkRow[c]).setZero();
       std::vector<Eigen::Matrix3d> scratch(kTetMapChunk);
       for (int begin = chunkTet[c]; begin < chunkTet[c + 1]; begin += kTetMapChunk) {
         const int end = std::min(chunkTet[c + 1], begin + kTetMapChunk);
@@ -190,9 +210,10 @@ struct StitchSolver::Impl {
         for (int j = begin; j < end; ++j) {
           const Eigen::Matrix3d columns =
               maps[j - begin] * stitch_detail::cofactorMatrix(rest.vertices, rest.tets.row(j));
-          sums.row(rest.tets(j, 0) - low) -= columns.rowwise().sum().transpose();
+          const int* row = cornerRow.data() + 4 * static_cast<size_t>(j);
+          buffer.row(row[0]) -= columns.rowwise().sum().transpose();
           for (int corner = 1; corner < 4; ++corner) {
-            sums.row(rest.tets(j, corner) - low) += columns.col(corner - 1).transpose();
+            buffer.row(row[corner]) += columns.col(corner - 1).transpose();
           }
         }
       }
@@ -201,23 +222,11 @@ struct StitchSolver::Impl {
     const auto freeCount = static_cast<Eigen::Index>(freeVertices.size());
     tbb::parallel_for(tbb::blocked_range<Eigen::Index>(0, freeCount, 4096),
                       [&](const tbb::blocked_range<Eigen::Index>& range) {
-                        // freeVertices ascends: the chunks whose vertex range
-                        // meets this block's, in chunk order.
-                        const int first = freeVertices[range.begin()];
-                        const int last = freeVertices[range.end() - 1];
-                        int overlapping[stitch_detail::kRhsChunks];
-                        int count = 0;
-                        for (int c = 0; c < stitch_detail::kRhsChunks; ++c) {
-                          if (chunkLow[c] <= last && chunkHigh[c] > first) overlapping[count++] = c;
-                        }
                         for (Eigen::Index r = range.begin(); r != range.end(); ++r) {
                           const int v = freeVertices[r];
                           Eigen::RowVector3d sum = Eigen::RowVector3d::Zero();
-                          for (int i = 0; i < count; ++i) {
-                            const int c = overlapping[i];
-                            if (v >= chunkLow[c] && v < chunkHigh[c]) {
-                              sum += buffer.row(chunkOffset[c] + v - chunkLow[c]);
-                            }
+                          for (int i = vertexRowStart[v]; i < vertexRowStart[v + 1]; ++i) {
+                            sum += buffer.row(vertexRows[i]);
                           }
                           rhs.row(rowOf.empty() ? r : rowOf[r]) = sum / 6.0;
                         }
