@@ -1,9 +1,19 @@
-// Per-blend cost of the prepared shape blender at 11k, 106k, 125k and 1M tets with
-// three examples (a box bar twisted, bent, and twisted + bent), split into
-// the per-tet blend, the stitch right-hand side and the back-substitution,
-// against refactoring the stitch every time and against vertex-linear
-// blending, measured in the same run. Counters (milliseconds per blend):
+// Per-blend cost of the prepared shape blender with three examples, split
+// into the per-tet blend, the stitch right-hand side and the
+// back-substitution, against refactoring the stitch every time and against
+// vertex-linear blending, measured in the same run. Two kinds of rest mesh:
+//   box/N         a box bar of 6 tets per cube (11k, 106k, 125k, 1M tets),
+//                 vertices and tets in grid order (local by construction);
+//   tetgen/N      TetGen's mesh of a surface given with --surface PATH (e.g.
+//                 CGAL's armadillo.off), at about N tets (from a volume
+//                 bound), in tetrahedralize's order: what `tetblend prepare`
+//                 hands the blender.
+// The examples bend and twist the bar (or the surface's mesh about its
+// longest bounding-box axis): a twist by π, a bend by π/2, and both.
+// Counters (milliseconds per blend):
 //   blend_ms, rhs_ms, solve_ms   parts of one prepared blend (mean)
+//   ns_per_tet                   their sum / tets, the figure that compares
+//                                meshes of different sizes and orders
 //   refactor_ms                  StitchSolver construction + solve, once
 //   vertex_linear_ms             one vertex-linear blend (mean of 20)
 //   x_refactor, x_vertex_linear  ratios to the prepared blend's time
@@ -29,7 +39,7 @@
 //   stitch_B_per_tet             StitchSolver::memoryBytes() / tets: the
 //                                factor with its indices, the rest mesh and
 //                                the per-vertex index arrays
-// Run: bench_blending [--benchmark_filter=...]
+// Run: bench_blending [--surface PATH] [--benchmark_filter=...]
 
 #include <benchmark/benchmark.h>
 #include <sys/resource.h>
@@ -43,10 +53,16 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <tuple>
+#include <utility>
+#include <vector>
 
 #include "tetblend/blending/shape_blender.h"
 #include "tetblend/core/constants.h"
 #include "tetblend/meshing/procedural_shapes.h"
+#include "tetblend/meshing/surface_io.h"
+#include "tetblend/meshing/surface_orientation.h"
+#include "tetblend/meshing/tetgen_mesher.h"
 
 namespace tetblend {
 namespace {
@@ -97,43 +113,83 @@ struct Model {
   double anonBeforeBytes = 0.0;  // its anonymous part
 };
 
+// The surface of the tetgen rows (--surface), empty when not given.
+std::string& surfacePath() {
+  static std::string path;
+  return path;
+}
+
+// A twist by π, a bend by π/2 and both, along `axis` from `base` over `length`.
+std::vector<Vertices> threeExamples(const Vertices& rest, const Eigen::Vector3d& base,
+                                    const Eigen::Vector3d& axis, const Eigen::Vector3d& across,
+                                    double length) {
+  const Vertices twisted = twistAboutAxis(rest, base, axis, kPi, length);
+  return {twisted, bendAboutAxis(rest, base, axis, across, kPi / 2, length),
+          bendAboutAxis(twisted, base, axis, across.cross(axis), kPi / 3, length)};
+}
+
 // nx = ny = n, nz = 2.6 n cubes of 6 tets: 6 * 2.6 n^3 tets.
-Model& model(int n, BlendMethod method) {
-  static std::map<std::pair<int, BlendMethod>, std::unique_ptr<Model>> cache;
-  auto& slot = cache[{n, method}];
+std::pair<TetMesh, std::vector<Vertices>> boxBar(int n) {
+  const int nz = static_cast<int>(std::lround(2.6 * n));
+  const double length = 2.6;
+  TetMesh rest = boxTetMesh(n, n, nz, Eigen::Vector3d(1.0, 1.0, length));
+  std::vector<Vertices> examples =
+      threeExamples(rest.vertices, Eigen::Vector3d(0.0, 0.0, -length / 2),
+                    Eigen::Vector3d::UnitZ(), Eigen::Vector3d::UnitX(), length);
+  return {std::move(rest), std::move(examples)};
+}
+
+// TetGen's quality refinement (radius-edge 2) makes about this many times
+// (solid volume) / (volume bound) tets: 2.5 for CGAL's armadillo at bounds
+// of volume / 1e5 and volume / 1e6.
+constexpr double kTetsPerBoundedVolume = 1.6;
+
+// TetGen's mesh of the --surface file with about `tets` tets, deformed about
+// its bounding box's longest axis.
+std::pair<TetMesh, std::vector<Vertices>> tetgenMesh(int tets) {
+  const SurfaceMesh surface = readSurface(surfacePath());
+  TetGenOptions options;
+  options.maxTetVolume = kTetsPerBoundedVolume * enclosedVolume(surface) / tets;
+  TetMesh rest = tetrahedralize(surface, options);
+  const Eigen::Vector3d low = rest.vertices.colwise().minCoeff();
+  const Eigen::Vector3d extent = Eigen::Vector3d(rest.vertices.colwise().maxCoeff()) - low;
+  Eigen::Index longest = 0;
+  extent.maxCoeff(&longest);
+  const Eigen::Vector3d axis = Eigen::Vector3d::Unit(longest);
+  const Eigen::Vector3d across = Eigen::Vector3d::Unit((longest + 1) % 3);
+  const Eigen::Vector3d base = low + 0.5 * (extent - extent(longest) * axis);
+  std::vector<Vertices> examples =
+      threeExamples(rest.vertices, base, axis, across, extent(longest));
+  return {std::move(rest), std::move(examples)};
+}
+
+enum class Mesh { kBox, kTetGen };
+
+Model& model(Mesh kind, int size, BlendMethod method) {
+  static std::map<std::tuple<Mesh, int, BlendMethod>, std::unique_ptr<Model>> cache;
+  auto& slot = cache[{kind, size, method}];
   if (slot) return *slot;
   cache.clear();  // keep one model alive at a time: the RSS counter measures one
   const double rssBefore = currentRssBytes();
   auto m = std::make_unique<Model>();
   m->rssBeforeBytes = rssBefore;
   m->anonBeforeBytes = anonymousRssBytes();
-  const int nz = static_cast<int>(std::lround(2.6 * n));
-  const double length = 2.6;
   {
     // The mesh and examples live only until the blender has copied them.
-    const TetMesh rest = boxTetMesh(n, n, nz, Eigen::Vector3d(1.0, 1.0, length));
-    const Eigen::Vector3d base(0.0, 0.0, -length / 2);
-    const Vertices twisted =
-        twistAboutAxis(rest.vertices, base, Eigen::Vector3d::UnitZ(), kPi, length);
-    std::vector<Vertices> examples = {twisted};
-    examples.push_back(bendAboutAxis(rest.vertices, base, Eigen::Vector3d::UnitZ(),
-                                     Eigen::Vector3d::UnitX(), kPi / 2, length));
-    examples.push_back(bendAboutAxis(twisted, base, Eigen::Vector3d::UnitZ(),
-                                     Eigen::Vector3d::UnitY(), kPi / 3, length));
+    const auto [rest, examples] = kind == Mesh::kBox ? boxBar(size) : tetgenMesh(size);
     ShapeBlenderOptions options;
     options.methods = {method, BlendMethod::kVertexLinear};
     const auto start = Clock::now();
     m->blender = std::make_unique<ShapeBlender>(rest, examples, options);
     m->prepareSeconds = secondsSince(start);
   }
-  auto& stored = cache[{n, method}];
+  auto& stored = cache[{kind, size, method}];
   stored = std::move(m);
   return *stored;
 }
 
-void blendBenchmark(benchmark::State& state, BlendMethod method) {
-  const int n = static_cast<int>(state.range(0));
-  Model& m = model(n, method);
+void blendBenchmark(benchmark::State& state, Mesh kind, BlendMethod method) {
+  Model& m = model(kind, static_cast<int>(state.range(0)), method);
   const double tets = static_cast<double>(m.blender->rest().tets.rows());
   BlendResult result;
   // One untimed blend first: the result's buffers are then allocated and
@@ -177,6 +233,7 @@ void blendBenchmark(benchmark::State& state, BlendMethod method) {
   state.counters["blend_ms"] = 1e3 * blend / count;
   state.counters["rhs_ms"] = 1e3 * rhs / count;
   state.counters["solve_ms"] = 1e3 * solve / count;
+  state.counters["ns_per_tet"] = 1e9 * perBlend / tets;
   state.counters["refactor_ms"] = 1e3 * refactor;
   state.counters["vertex_linear_ms"] = 1e3 * vertexLinear;
   state.counters["x_refactor"] = refactor / perBlend;
@@ -187,26 +244,62 @@ void blendBenchmark(benchmark::State& state, BlendMethod method) {
   state.counters["maxrss_B_per_tet"] = peakRssBytes() / tets;
 }
 
-// n = 9, 19, 20, 40 give 11 178, 106 134, 124 800 and 998 400 tets.
-BENCHMARK_CAPTURE(blendBenchmark, kaji, BlendMethod::kKaji)
+// n = 9, 19, 20, 24, 40 give 11 178, 106 134, 124 800, 214 272 and 998 400
+// tets (24: the size of the armadillo's tetgen/100000 row).
+BENCHMARK_CAPTURE(blendBenchmark, kaji, Mesh::kBox, BlendMethod::kKaji)
+    ->Name("box/kaji")
     ->Arg(9)
     ->Arg(19)
     ->Arg(20)
+    ->Arg(24)
     ->Arg(40)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
-BENCHMARK_CAPTURE(blendBenchmark, dq, BlendMethod::kDualQuaternion)
+BENCHMARK_CAPTURE(blendBenchmark, dq, Mesh::kBox, BlendMethod::kDualQuaternion)
+    ->Name("box/dq")
     ->Arg(9)
     ->Arg(20)
     ->Arg(40)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
-BENCHMARK_CAPTURE(blendBenchmark, linear, BlendMethod::kLinear)
+BENCHMARK_CAPTURE(blendBenchmark, linear, Mesh::kBox, BlendMethod::kLinear)
+    ->Name("box/linear")
     ->Arg(9)
     ->Arg(20)
     ->Arg(40)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 
+// The tetgen rows exist only with --surface (read before Google Benchmark's
+// own flags).
+void registerTetGenRows() {
+  benchmark::RegisterBenchmark("tetgen/kaji", blendBenchmark, Mesh::kTetGen, BlendMethod::kKaji)
+      ->Arg(100000)
+      ->Arg(1000000)
+      ->Unit(benchmark::kMillisecond)
+      ->UseRealTime();
+}
+
 }  // namespace
 }  // namespace tetblend
+
+int main(int argc, char** argv) {
+  int kept = 1;
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    if (arg.rfind("--surface=", 0) == 0) {
+      tetblend::surfacePath() = arg.substr(10);
+    } else if (arg == "--surface" && i + 1 < argc) {
+      tetblend::surfacePath() = argv[++i];
+    } else {
+      argv[kept++] = argv[i];
+    }
+  }
+  argc = kept;
+  if (!tetblend::surfacePath().empty()) tetblend::registerTetGenRows();
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}
