@@ -207,13 +207,13 @@ void SupernodalFactor::backward(int begin, int end, double* yv, UpdateMatrix& u,
   }
 }
 
-// Solves L L^T y = b in place on `y` (permuted order, #free by 3). Below
-// the split supernode `top_` (found by findSplit) the elimination tree's
-// postordered supernodes [low, split) and [split, top) are disjoint
-// subtrees that share only the rows of top_ and its ancestors, so they run
-// on two threads; the forward pass sends their updates of rows >= the
-// first column of `top_` to per-half buffers, added in a fixed order after
-// (deterministic). Supernodes outside top_'s subtree run sequentially.
+// Solves L L^T y = b in place on `y` (permuted order, #free by 3). The
+// postordered supernodes [low, split) and [split, top) (chosen by findSplit)
+// are unions of whole subtrees of the elimination tree with no ancestor in
+// each other, so they share only the rows of supernodes >= top and run on
+// two threads; the forward pass sends their updates of rows >= the first
+// column of `top_` to per-half buffers, added in a fixed order after
+// (deterministic). The other supernodes run sequentially.
 void SupernodalFactor::solve(RowMatrix3& y, SupernodalWorkspace& workspace) const {
   auto& update = workspace.update;
   auto& column = workspace.columns;
@@ -244,11 +244,15 @@ void SupernodalFactor::solve(RowMatrix3& y, SupernodalWorkspace& workspace) cons
   backward(0, low_, yv, update[0], column[0], true);
 }
 
-// Chooses `top_`, `low_` and `split_`: from the last root, descend into the
-// largest child subtree while it holds more than 2/3 of the entries, then
-// splits top_'s child subtrees [low_, top_) at the boundary closest to half of
-// their entries. split_ = 0 (sequential) when the supernodes are not
-// postordered or top_ has fewer than two child subtrees.
+// Chooses `low_` = 0, `split_` and `top_`. In a postorder every prefix
+// [0, split) is a union of whole subtrees; [split, top) is one too when
+// `top` is the parent of supernode split - 1 (a supernode in between whose
+// subtree reached below split would be an ancestor of split - 1 smaller
+// than its parent), and the two halves then have no ancestor in each other.
+// Each split is scored by the entries read on the longer path, max(half 0,
+// half 1) + everything from top on (sequential), and the cheapest kept.
+// split_ = 0 (sequential) when the supernodes are not postordered or no
+// split beats one thread.
 void SupernodalFactor::findSplit() {
   const auto nsuper = static_cast<int>(super_.size()) - 1;
   const int* super = super_.data();
@@ -271,27 +275,19 @@ void SupernodalFactor::findSplit() {
   for (int s = 0; s < nsuper; ++s) {
     if (subtreeSize[s] != s - first[s] + 1) return;
   }
-  const auto entries = [&](int s) { return double(px[s + 1]) - px[first[s]]; };
-  int node = nsuper - 1;
-  for (;;) {
-    int largest = -1;
-    for (int s = first[node]; s < node; ++s) {
-      if (parent[s] == node && (largest < 0 || entries(s) > entries(largest))) largest = s;
+  const auto entries = [&](int begin, int end) { return double(px[end]) - double(px[begin]); };
+  double bestCost = entries(0, nsuper);
+  for (int split = 1; split < nsuper; ++split) {
+    const int top = parent[split - 1] < 0 ? nsuper : parent[split - 1];
+    const double cost =
+        std::max(entries(0, split), entries(split, top)) + entries(top, nsuper);
+    if (cost < bestCost) {
+      bestCost = cost;
+      low_ = 0;
+      split_ = split;
+      top_ = top;
     }
-    if (largest < 0) return;
-    if (entries(largest) * 3.0 <= entries(node) * 2.0) break;
-    node = largest;
   }
-  const double half = 0.5 * (double(px[node]) + px[first[node]]);
-  int best = 0;
-  for (int s = first[node]; s + 1 < node; ++s) {
-    if (parent[s] != node) continue;
-    if (best == 0 || std::abs(px[s + 1] - half) < std::abs(px[best] - half)) best = s + 1;
-  }
-  if (best <= first[node] || best >= node) return;
-  top_ = node;
-  low_ = first[node];
-  split_ = best;
 }
 
 }  // namespace stitch_detail
