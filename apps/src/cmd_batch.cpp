@@ -197,6 +197,9 @@ struct BatchSetup {
 BatchSetup readSetup(const BatchArgs& a) {
   BatchSetup s;
   s.spec = readBatchSpec(a.spec);
+  // One name per method for the blender, the fingerprint and the summary:
+  // an alias ("dqs") becomes the name it stands for ("dq").
+  for (BatchJob& job : s.spec.jobs) job.method = canonicalMethodName(job.method);
   if (!a.compression.empty() || a.compressionLevel != 0) {
     s.spec.compression = parseVtkCompression(
         a.compression.empty() ? vtkCompressorName(s.spec.compression.compressor) : a.compression,

@@ -113,7 +113,7 @@ TEST(CommandHelp, EverySubcommandDocumentsItsOptions) {
       {"batch", {"--threads", "summary.json", "fingerprint"}},
       {"variations", {"--count", "--seed", "--extrapolate", "--pca", "Dirichlet"}},
       {"animate", {"--keys", "--frames", "--spline", "catmull-rom", "24"}},
-      {"deform", {"--handles", "--method", "--falloff", "lbs", "dqs"}},
+      {"deform", {"--handles", "--method", "--falloff", "lbs, dq, kaji", "dqs = dq"}},
       {"inspect", {"FILE"}}};
   for (const auto& c : cases) {
     SCOPED_TRACE(c.command);
