@@ -61,9 +61,9 @@ step "variations: 8 random cylinders, and principal components of the limb"
 step "animate: rest -> twist -> bend -> rest (Catmull-Rom in weight space)"
 "$tb" animate "$out/bar.tbm" --keys "0,0;1,0;0,1;0,0" --frames 24 -o "$out/animation"
 
-step "deform: probe turned by 2 pi (kaji swirls, dqs does not move; Kaji-Ochiai Fig. 2)"
+step "deform: probe turned by 2 pi (kaji swirls, dq does not move; Kaji-Ochiai Fig. 2)"
 mkdir -p "$out/deform"
-for m in kaji dqs; do
+for m in kaji dq; do
   "$tb" deform "$s/bar_rest.obj" --handles "$here/probe_handles.json" --method "$m" \
     -o "$out/deform/bar_probe_$m.vtp"
 done

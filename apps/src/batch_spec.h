@@ -14,11 +14,14 @@
 //                                    (default lz4)
 //     "compression_level": 5,        1 (fastest) .. 9 (smallest) (default 5)
 //     "threads": 0,                  job workers, 0 = all cores, at most 1024 (default 0)
-//     "jobs": [ {"name": "half", "weights": [0.5, 0], "method": "dq"}, ... ]
+//     "jobs": [ {"name": "half", "weights": [0.5, 0], "method": "dq"},
+//               {"name": "some", "weights": {"frame012": 0.5, "3": 0.25}}, ... ]
 //   }
 // A job's "name" (letters, digits, '-', '_', '.'; unique) names its output
 // files <output_dir>/<name>.vtu and .vtp (only .vtp when surface_only);
-// "method" overrides the default.
+// "method" overrides the default. "weights" is an array of one number per
+// example, or an object of some examples' weights keyed by the example's
+// name or 1-based index (batch_job_weights.h; the others get 0).
 
 #include <nlohmann/json.hpp>
 #include <string>
@@ -32,7 +35,7 @@ namespace tetblend::cli {
 /// bad job fails alone; only its name is checked when the spec is read.
 struct BatchJob {
   std::string name;
-  nlohmann::json weights;  ///< as written; must be an array of numbers
+  nlohmann::json weights;  ///< as written; checked by jobWeights (batch_job_weights.h)
   std::string method;      ///< resolved: the job's or the spec's default
 };
 

@@ -8,7 +8,10 @@ namespace tetblend::cli {
 void addBlendOptions(CLI::App& command, BlendSettings& settings) {
   std::string names;
   for (BlendMethod m : allBlendMethods()) names += (names.empty() ? "" : ", ") + blendMethodName(m);
-  command.add_option("--method", settings.method, "blend method: " + names)->capture_default_str();
+  command
+      .add_option("--method", settings.method,
+                  "blend method: " + names + " (" + methodAliasNote() + ")")
+      ->capture_default_str();
   command
       .add_option("--consistency", settings.consistency,
                   "consistent rotation logarithms across neighbouring tets (Kaji-Ochiai Alg. 1; "

@@ -25,16 +25,6 @@ std::string trim(const std::string& s) {
   return s.substr(b, s.find_last_not_of(" \t") - b + 1);
 }
 
-double parseNumber(const std::string& token, const std::string& what) {
-  const std::string t = trim(token);
-  double value = 0.0;
-  const auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), value);
-  if (t.empty() || ec != std::errc() || end != t.data() + t.size() || !std::isfinite(value)) {
-    throw InputError(what + ": '" + t + "' is not a finite number");
-  }
-  return value;
-}
-
 std::vector<std::string> split(const std::string& text, char separator) {
   std::vector<std::string> parts;
   std::stringstream in(text);
@@ -46,10 +36,21 @@ std::vector<std::string> split(const std::string& text, char separator) {
 
 }  // namespace
 
+double parseFiniteNumber(const std::string& text, const std::string& what) {
+  const std::string t = trim(text);
+  double value = 0.0;
+  const auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), value);
+  if (t.empty() || ec != std::errc() || end != t.data() + t.size() || !std::isfinite(value)) {
+    throw InputError(what + ": '" + t + "' is not a finite number");
+  }
+  return value;
+}
+
 std::vector<double> parseWeights(const std::string& text, const std::string& what) {
   if (trim(text).empty()) throw InputError(what + ": give at least one weight, e.g. 0.5,0.5");
   std::vector<double> weights;
-  for (const std::string& token : split(text, ',')) weights.push_back(parseNumber(token, what));
+  for (const std::string& token : split(text, ','))
+    weights.push_back(parseFiniteNumber(token, what));
   return weights;
 }
 

@@ -10,6 +10,10 @@
 
 namespace tetblend::cli {
 
+/// Parses one finite number (surrounding blanks allowed); `what` names the
+/// option in the InputError thrown otherwise.
+double parseFiniteNumber(const std::string& text, const std::string& what);
+
 /// Parses a comma-separated list of finite numbers ("0.5,-0.2,1"); `what`
 /// names the option in the InputError thrown for an empty list or a bad
 /// number.

@@ -50,6 +50,7 @@
 #include <sstream>
 #include <thread>
 
+#include "batch_job_weights.h"
 #include "batch_journal.h"
 #include "batch_mpi.h"
 #include "batch_spec.h"
@@ -92,17 +93,6 @@ struct JobOutcome {
   json quality = json::object();
   double seconds = 0.0;
 };
-
-std::vector<double> jobWeights(const BatchJob& job, std::size_t exampleCount) {
-  if (!job.weights.is_array()) throw InputError("\"weights\" must be an array of numbers");
-  std::vector<double> w;
-  for (const json& x : job.weights) {
-    if (!x.is_number()) throw InputError("\"weights\" must be an array of numbers");
-    w.push_back(x.get<double>());
-  }
-  requireWeightCount(w, exampleCount, "\"weights\"");
-  return w;
-}
 
 /// One CSV field per RFC 4180: in double quotes, inner quotes doubled, when it
 /// holds a comma, a quote, CR or LF; as is otherwise.
@@ -147,11 +137,8 @@ void writeSummaries(const BatchSpec& spec, const std::vector<std::string>& finge
     if (!o.done) entry["error"] = o.error;
     summary["jobs"].push_back(entry);
 
-    std::string weights;
-    if (job.weights.is_array())
-      for (const json& x : job.weights) weights += (weights.empty() ? "" : " ") + x.dump();
     csv << csvField(job.name) << "," << csvField(job.method) << "," << (o.done ? "done" : "failed")
-        << "," << csvField(weights);
+        << "," << csvField(jobWeightsText(job));
     for (const auto& c : qualityColumns(QualitySummary{})) {
       csv << ",";
       if (o.done && quality.contains(c.first) && quality[c.first].is_number())
@@ -197,6 +184,9 @@ struct BatchSetup {
 BatchSetup readSetup(const BatchArgs& a) {
   BatchSetup s;
   s.spec = readBatchSpec(a.spec);
+  // One name per method for the blender, the fingerprint and the summary:
+  // an alias ("dqs") becomes the name it stands for ("dq").
+  for (BatchJob& job : s.spec.jobs) job.method = canonicalMethodName(job.method);
   if (!a.compression.empty() || a.compressionLevel != 0) {
     s.spec.compression = parseVtkCompression(
         a.compression.empty() ? vtkCompressorName(s.spec.compression.compressor) : a.compression,
@@ -258,7 +248,8 @@ class JobRunner {
     const BatchJob& job = setup_.spec.jobs[i];
     const auto start = std::chrono::steady_clock::now();
     try {
-      const std::vector<double> weights = jobWeights(job, setup_.model.examples.size());
+      const std::vector<double> weights =
+          jobWeights(job, setup_.model.exampleSources, setup_.spec.modelPath);
       if (!methodError_.at(job.method).empty()) throw InputError(methodError_.at(job.method));
       BlendedShape shape;
       {
@@ -578,7 +569,8 @@ void registerBatch(CLI::App& root) {
       "(false), \"quality_arrays\" (\"all\"; \"none\" or names, as --quality-arrays of blend), "
       "\"compression\" (\"lz4\"; \"zlib\" or \"none\"), \"compression_level\" (5; 1..9), "
       "\"threads\" (0), "
-      "\"jobs\": [{\"name\", \"weights\": [..], \"method\"}]}; paths relative to the spec.");
+      "\"jobs\": [{\"name\", \"weights\": [one per example] or {\"example name or 1-based "
+      "index\": weight, ...} (the others 0), \"method\"}]}; paths relative to the spec.");
   cmd->add_option("SPEC", args->spec, "batch spec (.json)")->required();
   cmd->add_option("--threads", args->threads,
                   "job workers and TBB threads; 0 = all cores; default: the spec's \"threads\"")

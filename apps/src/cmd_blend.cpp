@@ -13,6 +13,7 @@
 #include "tetblend/core/error.h"
 #include "tetblend/pipeline/blended_shape.h"
 #include "tetblend/pipeline/make_blender.h"
+#include "weight_options.h"
 
 namespace tetblend::cli {
 
@@ -22,7 +23,7 @@ struct BlendArgs {
   std::string model;
   std::string rest;
   std::vector<std::string> examples;
-  std::string weights;
+  WeightOptions weights;
   std::string output;
   BlendSettings blend;
   PrepareSettings prepare;
@@ -40,7 +41,7 @@ void runBlend(const BlendArgs& a) {
     throw InputError("--quality-arrays " + a.blend.qualityArrays + ": -o " + a.output +
                      " writes the surface only, which has no per-tet arrays; write a .vtu");
   }
-  const std::vector<double> weights = parseWeights(a.weights, "--weights");
+  const GivenWeights given = parseWeightOptions(a.weights);
   const BlendMethod method = parseMethod(a.blend.method);
   const std::vector<std::string> formats = parseSurfaceFormats(a.blend.surfaceFormats);
   const VtkCompression compression =
@@ -52,9 +53,12 @@ void runBlend(const BlendArgs& a) {
 
   PrepareMessages messages;
   messages.warning = printWarning;
+  // Surfaces prepared here are named by the --example paths: bad weights fail before TetGen.
+  std::vector<double> weights =
+      fromModel ? std::vector<double>{} : weightsForExamples(given, a.examples, "");
   const ModelData model = fromModel ? readModelFile(a.model)
                                     : prepareWithProgress(a.rest, a.examples, a.prepare, messages);
-  requireWeightCount(weights, model.examples.size(), "--weights");
+  if (fromModel) weights = weightsForExamples(given, model.exampleSources, a.model);
   ProgressBar progress("blend", 3, a.prepare.quiet);
   const QualityFigures figures = qualityFigures(arrays, extensionOf(a.output) == ".vtu");
   const ShapeBlender blender =
@@ -71,7 +75,8 @@ void runBlend(const BlendArgs& a) {
   if (shape.quality.invertedCount > 0) {
     printWarning(a.output + ": " + std::to_string(shape.quality.invertedCount) + " of " +
                  std::to_string(model.rest.tets.rows()) + " tets are inverted at weights " +
-                 a.weights + " (cell array 'inverted'; weights outside [0, 1] extrapolate)");
+                 weightsText(a.weights) +
+                 " (cell array 'inverted'; weights outside [0, 1] extrapolate)");
   }
 }
 
@@ -84,14 +89,14 @@ void registerBlend(CLI::App& root) {
       "Blend the examples at one weight vector. Writes the tets to OUT.vtu (point data "
       "'displacement' from the rest; cell data: per-tet quality, see --quality-arrays) and the "
       "surface, in the rest surface's vertex order, to OUT.vtp beside it; -o OUT.vtp writes the "
-      "surface only. Weights: one per example, any reals; the "
-      "rest has weight 1 - sum(w), so all zeros give the rest and a unit vector an example.");
+      "surface only. Weights: any reals, given for every example (-w) or for some by name or "
+      "index (--weight; the others get 0); the rest has weight 1 - sum(w), so all zeros give "
+      "the rest and a unit vector an example.");
   cmd->add_option("MODEL", args->model, "model file made by 'tetblend prepare'");
   cmd->add_option("--rest", args->rest, "rest surface (instead of MODEL; prepared on the fly)");
   cmd->add_option("--example", args->examples,
                   "example surface with the rest's triangles (repeat for each example)");
-  cmd->add_option("-w,--weights", args->weights, "comma-separated weights, one per example")
-      ->required();
+  addWeightOptions(*cmd, args->weights);
   cmd->add_option("-o,--output", args->output,
                   "output .vtu file (the .vtp goes beside it), or .vtp for the surface only")
       ->required();

@@ -105,7 +105,8 @@ void registerDeform(CLI::App& root) {
                   "\"stretch_log\": 3x3}], \"weights\": [[one per handle] per vertex] (optional)}")
       ->required();
   cmd->add_option("-o,--output", args->output, "output mesh (format by extension)")->required();
-  cmd->add_option("--method", args->method, "per-vertex blend: lbs, dqs, kaji, kaji-frechet")
+  cmd->add_option("--method", args->method,
+                  "per-vertex blend: " + handleBlendNames() + "; dq blends rigid handles only")
       ->capture_default_str();
   cmd->add_option("--falloff", args->falloff, "exponent p of the distance weights")
       ->capture_default_str();

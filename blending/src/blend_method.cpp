@@ -30,6 +30,13 @@ constexpr NamedMethod kMethodNames[] = {
     {BlendMethod::kVertexLinear, "vertex-linear"},
 };
 
+struct MethodAlias {
+  const char* alias;
+  const char* name;
+};
+
+constexpr MethodAlias kMethodAliases[] = {{"dqs", "dq"}};
+
 }  // namespace
 
 const std::vector<BlendMethod>& allBlendMethods() {
@@ -49,12 +56,29 @@ std::string blendMethodName(BlendMethod method) {
 }
 
 BlendMethod blendMethodFromName(const std::string& name) {
+  const std::string canonical = canonicalMethodName(name);
   std::string valid;
   for (const NamedMethod& named : kMethodNames) {
-    if (name == named.name) return named.method;
+    if (canonical == named.name) return named.method;
     valid += valid.empty() ? named.name : std::string(", ") + named.name;
   }
-  throw InputError("unknown blend method '" + name + "': use one of " + valid);
+  throw InputError("unknown blend method '" + name + "': use one of " + valid + " (" +
+                   methodAliasNote() + ")");
+}
+
+std::string canonicalMethodName(const std::string& name) {
+  for (const MethodAlias& a : kMethodAliases) {
+    if (name == a.alias) return a.name;
+  }
+  return name;
+}
+
+std::string methodAliasNote() {
+  std::string note;
+  for (const MethodAlias& a : kMethodAliases) {
+    note += (note.empty() ? "" : ", ") + std::string(a.alias) + " = " + a.name;
+  }
+  return note;
 }
 
 bool usesRotationLogs(BlendMethod method) {

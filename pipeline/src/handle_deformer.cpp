@@ -5,6 +5,7 @@
 #include <iterator>
 #include <nlohmann/json.hpp>
 
+#include "tetblend/blending/blend_method.h"
 #include "tetblend/core/dual_quaternion.h"
 #include "tetblend/core/dual_quaternion_blend.h"
 #include "tetblend/core/error.h"
@@ -18,7 +19,20 @@ using nlohmann::json;
 
 // Relative offset delta / (bounding-box diagonal) of the distance weights.
 constexpr double kDistanceOffset = 1e-3;
-// A handle is rigid for dqs when its log-stretch has Frobenius norm below this
+
+struct NamedHandleBlend {
+  HandleBlend method;
+  const char* name;
+};
+
+// The names of the command line; "dq" is also the blend method's name, and
+// both take the same aliases (canonicalMethodName).
+constexpr NamedHandleBlend kHandleBlendNames[] = {{HandleBlend::kLbs, "lbs"},
+                                                  {HandleBlend::kDqs, "dq"},
+                                                  {HandleBlend::kKaji, "kaji"},
+                                                  {HandleBlend::kKajiFrechet, "kaji-frechet"}};
+
+// A handle is rigid for dq when its log-stretch has Frobenius norm below this
 // (dimensionless; ~1e-9 relative stretch, far above round-off of psi).
 constexpr double kRigidStretchTolerance = 1e-9;
 
@@ -57,11 +71,19 @@ Handle parseHandle(const json& j, const std::string& where) {
 }  // namespace
 
 HandleBlend parseHandleBlend(const std::string& name) {
-  if (name == "lbs") return HandleBlend::kLbs;
-  if (name == "dqs") return HandleBlend::kDqs;
-  if (name == "kaji") return HandleBlend::kKaji;
-  if (name == "kaji-frechet") return HandleBlend::kKajiFrechet;
-  throw InputError("method: unknown deformer '" + name + "'; use lbs, dqs, kaji or kaji-frechet");
+  const std::string canonical = canonicalMethodName(name);
+  for (const NamedHandleBlend& named : kHandleBlendNames) {
+    if (canonical == named.name) return named.method;
+  }
+  throw InputError("method: unknown deformer '" + name + "'; use " + handleBlendNames());
+}
+
+std::string handleBlendNames() {
+  std::string names;
+  for (const NamedHandleBlend& named : kHandleBlendNames) {
+    names += (names.empty() ? "" : ", ") + std::string(named.name);
+  }
+  return names + " (" + methodAliasNote() + ")";
 }
 
 HandleSpec parseHandleSpec(const std::string& text, const std::string& what) {
@@ -134,7 +156,7 @@ Vertices deformByHandles(const Vertices& vertices, const std::vector<Handle>& ha
       if (h.params.stretchLog.norm() > kRigidStretchTolerance) {
         throw DomainError("handle '" + h.name +
                           "' stretches (|log S| = " + std::to_string(h.params.stretchLog.norm()) +
-                          "); dqs blends rigid handles only, use kaji or lbs");
+                          "); dq blends rigid handles only, use kaji or lbs");
       }
       dqs.push_back(DualQuaternion::fromRigid(matrices.back()));
     }

@@ -43,7 +43,7 @@ void bindDeform(py::module_& m) {
         "'rotation': rotation vector in radians of any length, 'stretch_log': 3x3}.\n"
         "weights: (V, n) real, one column per handle, or None for distance weights\n"
         "w_i ~ (|u - c_i| + delta)^-falloff normalised (delta = 1e-3 of the bounding-box\n"
-        "diagonal). method: 'lbs', 'dqs' (rigid handles), 'kaji' or 'kaji-frechet'.\n"
+        "diagonal). method: 'lbs', 'dq' (rigid handles; alias 'dqs'), 'kaji' or 'kaji-frechet'.\n"
         "Returns float64 (V, 3).");
 }
 

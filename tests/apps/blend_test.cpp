@@ -88,6 +88,18 @@ TEST_F(BlendCommand, UnitWeightsGiveEachExampleForEveryMapMethod) {
   }
 }
 
+// deform's name for dual quaternions, dqs, is an alias of blend's dq.
+TEST_F(BlendCommand, MethodAliasDqsIsDq) {
+  for (const std::string method : {"dq", "dqs"}) {
+    const RunResult r = tetblend({"blend", model_.string(), "-w", "0.3,0.4", "--method", method,
+                                  "-o", (dir_ / (method + ".vtu")).string()},
+                                 dir_);
+    ASSERT_EQ(r.code, 0) << r.err;
+  }
+  EXPECT_TRUE(slurp(dir_ / "dq.vtu") == slurp(dir_ / "dqs.vtu"));
+  EXPECT_TRUE(slurp(dir_ / "dq.vtp") == slurp(dir_ / "dqs.vtp"));
+}
+
 TEST_F(BlendCommand, InvertedTetsAreWarnedAboutAndOverflowIsAWeightsError) {
   // Far extrapolation (the 5,-4) turns tets inside out: the blend is
   // written, with one warning line counting them.

@@ -72,6 +72,21 @@ TEST_F(DeformCommand, HalfOfAFullTurnIsAHalfTurnForKajiAndNothingForDqs) {
             kFullTurnTolerance);
 }
 
+// blend's name for dual quaternions, dq, is deform's too; dqs stays an alias.
+TEST_F(DeformCommand, DqAndItsAliasDqsAreOneMethod) {
+  const json handles{
+      {"handles", {{{"name", "fixed"}}, {{"name", "turned"}, {"rotation", {0, 0, 1}}}}}};
+  const std::string dq = slurp(deform(handles, "dq"));
+  ASSERT_FALSE(dq.empty());
+  EXPECT_TRUE(dq == slurp(deform(handles, "dqs")));
+  const RunResult r =
+      tetblend({"deform", (dir_ / "bar_rest.obj").string(), "--handles", (dir_ / "h.json").string(),
+                "--method", "dual", "-o", (dir_ / "o.vtp").string()},
+               dir_);
+  expectOneLineError(r);
+  EXPECT_NE(r.err.find("use lbs, dq, kaji, kaji-frechet (dqs = dq)"), std::string::npos) << r.err;
+}
+
 TEST_F(DeformCommand, BadHandleFilesAreOneLineErrors) {
   std::ofstream(dir_ / "h.json") << R"({"handles": [{"matrix": [[1,0,0]]}]})";
   expectOneLineError(tetblend({"deform", (dir_ / "bar_rest.obj").string(), "--handles",

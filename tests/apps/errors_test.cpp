@@ -109,12 +109,14 @@ TEST(CommandHelp, EverySubcommandDocumentsItsOptions) {
   } cases[] = {
       {"prepare", {"--quality", "--max-volume", "--tetrise", "--threads", "2"}},
       {"blend",
-       {"--weights", "--method", "kaji", "--consistency", "--nonlinear", "--surface-format"}},
+       {"--weights", "--weight", "NAME_OR_INDEX=VALUE", "--method", "kaji", "dqs = dq",
+        "--consistency", "--nonlinear", "--surface-format"}},
       {"batch", {"--threads", "summary.json", "fingerprint"}},
       {"variations", {"--count", "--seed", "--extrapolate", "--pca", "Dirichlet"}},
       {"animate", {"--keys", "--frames", "--spline", "catmull-rom", "24"}},
-      {"deform", {"--handles", "--method", "--falloff", "lbs", "dqs"}},
-      {"inspect", {"FILE"}}};
+      {"deform", {"--handles", "--method", "--falloff", "lbs, dq, kaji", "dqs = dq"}},
+      {"inspect", {"FILE"}},
+  };
   for (const auto& c : cases) {
     SCOPED_TRACE(c.command);
     const RunResult r = tetblend({c.command, "--help"}, dir);

@@ -203,7 +203,12 @@ TEST(ShapeBlender, ErrorsNameTheProblem) {
   EXPECT_THROW(blendMethodFromName("slerp"), InputError);
   for (BlendMethod method : allBlendMethods()) {
     EXPECT_EQ(blendMethodFromName(blendMethodName(method)), method);
+    EXPECT_EQ(canonicalMethodName(blendMethodName(method)), blendMethodName(method));
   }
+  // deform's name for dual quaternions is an alias of dq.
+  EXPECT_EQ(canonicalMethodName("dqs"), "dq");
+  EXPECT_EQ(blendMethodFromName("dqs"), BlendMethod::kDualQuaternion);
+  EXPECT_EQ(methodAliasNote(), "dqs = dq");
 }
 
 }  // namespace

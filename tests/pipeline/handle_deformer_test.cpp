@@ -8,6 +8,7 @@
 
 #include "tetblend/core/constants.h"
 #include "tetblend/core/dual_quaternion_blend.h"
+#include "tetblend/core/error.h"
 #include "tetblend/core/kaji_ochiai.h"
 
 namespace tetblend {
@@ -45,6 +46,18 @@ TEST(HandleDeformer, DqsIsCoreDlbWithTheHeaviestHandleAsSignReference) {
   EXPECT_LT((moved.row(0).transpose() - expected).norm(), kTolerance);
   const double angle = std::atan2(moved(0, 1), moved(0, 0));
   EXPECT_GT(std::abs(angle), 160.0 * kPi / 180.0) << "turned by " << angle << " rad";
+}
+
+// The dual quaternion deformer is named as the blend method (dq), and
+// "dqs", its earlier name, is the alias every method name takes.
+TEST(HandleDeformer, DqIsNamedAsTheBlendMethodWithTheAliasDqs) {
+  EXPECT_EQ(parseHandleBlend("dq"), HandleBlend::kDqs);
+  EXPECT_EQ(parseHandleBlend("dqs"), HandleBlend::kDqs);
+  EXPECT_EQ(parseHandleBlend("lbs"), HandleBlend::kLbs);
+  EXPECT_EQ(parseHandleBlend("kaji"), HandleBlend::kKaji);
+  EXPECT_EQ(parseHandleBlend("kaji-frechet"), HandleBlend::kKajiFrechet);
+  EXPECT_THROW(parseHandleBlend("dib"), InputError);
+  EXPECT_EQ(handleBlendNames(), "lbs, dq, kaji, kaji-frechet (dqs = dq)");
 }
 
 }  // namespace

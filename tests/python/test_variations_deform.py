@@ -41,7 +41,7 @@ def test_pca_mean_and_steps_are_the_cli_weights(bar_model, cli, tmp_path):
     assert np.all(np.diff(pca["sigmas"]) <= 0)
 
 
-@pytest.mark.parametrize("method", ["kaji", "dqs"])
+@pytest.mark.parametrize("method", ["kaji", "dq", "dqs"])
 def test_deform_equals_the_cli_output_bit_for_bit(samples, cli, tmp_path, method):
     out = tmp_path / f"probe_{method}.vtp"
     handles = SAMPLES / "probe_handles.json"

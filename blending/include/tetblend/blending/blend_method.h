@@ -38,8 +38,18 @@ const std::vector<BlendMethod>& allBlendMethods();
 /// The command-line name of `method` (e.g. "kaji-frechet").
 std::string blendMethodName(BlendMethod method);
 
-/// The method called `name`. Throws InputError listing the valid names.
+/// The method called `name` (or an alias of it, canonicalMethodName).
+/// Throws InputError listing the valid names.
 BlendMethod blendMethodFromName(const std::string& name);
+
+/// `name` with an alias of a method name replaced by that name; any other
+/// name unchanged. The one alias: "dqs" (dual quaternion skinning, the name
+/// `tetblend deform` used) for "dq", so that both spellings name the dual
+/// quaternion method of `blend` and of `deform` (handle_deformer.h).
+std::string canonicalMethodName(const std::string& name);
+
+/// The aliases for help texts and error messages: "dqs = dq".
+std::string methodAliasNote();
 
 /// True for the methods that take logarithms of rotations and so depend on
 /// the rotation-consistency option (kaji, liebodies). kaji-frechet takes

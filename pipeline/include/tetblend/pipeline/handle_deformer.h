@@ -34,15 +34,20 @@ struct Handle {
 /// The methods that blend handle transforms per vertex.
 enum class HandleBlend {
   kLbs,          ///< "lbs": sum_i w_i A_i (linear blend skinning)
-  kDqs,          ///< "dqs": DLB of the rigid parts' dual quaternions (Kavan §3.4; core's
-                 ///< dlb: antipodes aligned with the handle of largest weight);
-                 ///< handles must be rigid (no stretch)
+  kDqs,          ///< "dq" (alias "dqs"): DLB of the rigid parts' dual quaternions (Kavan
+                 ///< §3.4; core's dlb: antipodes aligned with the handle of largest
+                 ///< weight); handles must be rigid (no stretch)
   kKaji,         ///< "kaji": phi(sum_i w_i psi(A_i)) (Kaji–Ochiai §5)
   kKajiFrechet,  ///< "kaji-frechet": refined weighted Fréchet sum (Alg. 2)
 };
 
-/// Parses "lbs", "dqs", "kaji" or "kaji-frechet"; InputError otherwise.
+/// Parses "lbs", "dq", "kaji" or "kaji-frechet", or an alias of one
+/// (canonicalMethodName: "dqs"); InputError otherwise.
 HandleBlend parseHandleBlend(const std::string& name);
+
+/// The names parseHandleBlend takes and their aliases, for help texts:
+/// "lbs, dq, kaji, kaji-frechet (dqs = dq)".
+std::string handleBlendNames();
 
 /// Handles and optional per-vertex weights read from a JSON file:
 ///   {"handles": [{"name": "tip", "centre": [x,y,z],
