@@ -26,6 +26,12 @@ using core_test::uniform;
 
 // Compositions, exp/log chains of unit-scale motions: round-off only.
 constexpr double kTol = 1e-12;
+// Blends and ScLERPs chained or composed, as absolute matrix distances with |T| up to ~10, not 1.
+constexpr double kChainTol = 10 * kTol;
+// DIB stops at |x| < 1e-13 (2.8e-13 as a matrix log), plus 4 of Eigen's 4x4 logs within kTol.
+constexpr double kDibStationarityTol = 10 * kTol;
+// dib(r q_i) vs r dib(q_i): two runs stopped apart at |x| < 1e-13, composed with r (|T| <= 5.2).
+constexpr double kDibInvarianceTol = 100 * kTol;
 // Kavan §4: DLB and ScLERP rotation angles differ by less than 8.15 degrees.
 constexpr double kDlbAngleBound = 8.15 * kPi / 180.0;
 
@@ -85,7 +91,7 @@ TEST(ScLerp, ConstantSpeedAlongAFixedScrew) {
       const double t = k / 8.0;
       const Eigen::Matrix4d step =
           (scLerp(t, p, q).conjugate() * scLerp(t + 0.125, p, q)).toMatrix();
-      ASSERT_LE((step - firstStep).norm(), kTol * 10) << i << " k " << k;
+      ASSERT_LE((step - firstStep).norm(), kChainTol) << i << " k " << k;
       const Eigen::Matrix4d d =
           (scLerp(t + h, p, q).toMatrix() - scLerp(t - h, p, q).toMatrix()) / (2 * h);
       ASSERT_NEAR(d.norm(), speed, kFiniteDifferenceTol * (1 + speed)) << i << " k " << k;
@@ -119,7 +125,7 @@ TEST(Dib, TwoInputsConvergeToScLerpAfterOneIteration) {
     const DibResult r = dib({p, q}, {1 - t, t});
     ASSERT_TRUE(r.converged);
     ASSERT_EQ(r.iterations, 1) << "sample " << i;
-    ASSERT_LE(matrixDistance(r.blend, scLerp(t, p, q)), kTol * 10) << "sample " << i;
+    ASSERT_LE(matrixDistance(r.blend, scLerp(t, p, q)), kChainTol) << "sample " << i;
   }
 }
 
@@ -144,9 +150,9 @@ TEST(Dib, ManyInputsReachTheWeightedMeanAndAreBiInvariant) {
     const Eigen::Matrix4d bInv = b.blend.toMatrix().inverse();
     Eigen::Matrix4d mean = Eigen::Matrix4d::Zero();
     for (int k = 0; k < 4; ++k) mean += w[k] * (bInv * hs[k]).log();
-    ASSERT_LE(mean.norm(), kTol * 10) << "sample " << i;
-    ASSERT_LE((dib(left, w).blend.toMatrix() - r * b.blend.toMatrix()).norm(), kTol * 100);
-    ASSERT_LE((dib(right, w).blend.toMatrix() - b.blend.toMatrix() * r).norm(), kTol * 100);
+    ASSERT_LE(mean.norm(), kDibStationarityTol) << "sample " << i;
+    ASSERT_LE((dib(left, w).blend.toMatrix() - r * b.blend.toMatrix()).norm(), kDibInvarianceTol);
+    ASSERT_LE((dib(right, w).blend.toMatrix() - b.blend.toMatrix() * r).norm(), kDibInvarianceTol);
   }
   std::cout << "[ info     ] DIB iterations (max over samples): " << maxIterations << "\n";
 }
@@ -181,8 +187,8 @@ TEST(Dlb, BiInvariant) {
     const std::vector<double> w = randomWeights(rng, 4);
     const DualQuaternion b = dlb(qs, w);
     ASSERT_TRUE(b.isUnit(kTol));
-    ASSERT_LE(matrixDistance(dlb(left, w), r * b), kTol * 10) << "sample " << i;
-    ASSERT_LE(matrixDistance(dlb(right, w), b * r), kTol * 10) << "sample " << i;
+    ASSERT_LE(matrixDistance(dlb(left, w), r * b), kChainTol) << "sample " << i;
+    ASSERT_LE(matrixDistance(dlb(right, w), b * r), kChainTol) << "sample " << i;
   }
 }
 

@@ -25,6 +25,16 @@ using core_test::uniform;
 constexpr double kRoundTripTol = 1e-14;
 // Against Eigen's Pade/Schur-Parlett exp/log of the 4x4 matrix.
 constexpr double kOracleTol = 1e-12;
+// Matrix -> dual quaternion -> product(s) -> matrix or point: 3-5 steps, each within kRoundTripTol.
+constexpr double kChainTol = 10 * kRoundTripTol;
+// Norms of non-unit q = u c (c0 in [0.1, 3], |c1| <= 2): terms up to |c1| / c0 = 20 cancel.
+constexpr double kNonUnitTol = 10 * kRoundTripTol;
+// log at half-angle pi - 1e-3 divides vec(q0) by sin(phi) = 1e-3: 1e3 times kOracleTol.
+constexpr double kLogNearPiTol = 1e3 * kOracleTol;
+// Eigen's 4x4 log (oracle) is conditioned like theta / sin(theta): 314 at the pi - 1e-2 cut-off.
+constexpr double kLogOracleTol = 10 * kOracleTol;
+// q^(1/2) q^(1/2) against q: two exp(t log q), each within kOracleTol, then a product.
+constexpr double kPowerRoundTripTol = 10 * kOracleTol;
 
 // Rotation angles (radians) of the hard cases; the DQ series switch acts on the
 // half-angle, so 2 * threshold is tested on both sides.
@@ -70,19 +80,19 @@ TEST(DualQuaternion, ProductConjugatesAndPointTransform) {
     const Eigen::Matrix4d b = randomRigid(rng, kPi, 3);
     const DualQuaternion qa = DualQuaternion::fromRigid(a);
     const DualQuaternion qb = DualQuaternion::fromRigid(b);
-    ASSERT_LE(((qa * qb).toMatrix() - a * b).norm(), 10 * kRoundTripTol * (a * b).norm());
+    ASSERT_LE(((qa * qb).toMatrix() - a * b).norm(), kChainTol * (a * b).norm());
     // The quaternion conjugate inverts a unit dual quaternion (Kavan §3).
     ASSERT_LE((qa * qa.conjugate()).distanceUpToSign(DualQuaternion::Identity()), kRoundTripTol);
-    ASSERT_LE((qa.conjugate().toMatrix() - a.inverse()).norm(), 10 * kRoundTripTol * a.norm());
+    ASSERT_LE((qa.conjugate().toMatrix() - a.inverse()).norm(), kChainTol * a.norm());
     // Kavan §3: q (1 + eps v) q^{*-bar} = 1 + eps (R v + T), both conjugates.
     const Eigen::Vector3d x(uniform(rng, -2, 2), uniform(rng, -2, 2), uniform(rng, -2, 2));
     const DualQuaternion vq(Eigen::Quaterniond::Identity(),
                             Eigen::Quaterniond(0, x.x(), x.y(), x.z()));
     const DualQuaternion moved = qa * vq * qa.conjugate().dualConjugate();
     const Eigen::Vector3d expected = (a * x.homogeneous()).head<3>();
-    ASSERT_LE((moved.dual().vec() - expected).norm(), 10 * kRoundTripTol * (1 + expected.norm()));
+    ASSERT_LE((moved.dual().vec() - expected).norm(), kChainTol * (1 + expected.norm()));
     ASSERT_NEAR(moved.real().w(), 1.0, kRoundTripTol);
-    ASSERT_LE((qa.transformPoint(x) - expected).norm(), 10 * kRoundTripTol * (1 + expected.norm()));
+    ASSERT_LE((qa.transformPoint(x) - expected).norm(), kChainTol * (1 + expected.norm()));
   }
 }
 
@@ -98,14 +108,14 @@ TEST(DualQuaternion, NormIsMultiplicativeAndNormalisationRecoversTheUnitFactor) 
     dual.coeffs() = c0 * u.dual().coeffs() + c1 * u.real().coeffs();
     const DualQuaternion q(Eigen::Quaterniond(c0 * u.real().coeffs()), dual);
     ASSERT_NEAR(q.norm().real, c0, kRoundTripTol * c0);
-    ASSERT_NEAR(q.norm().dual, c1, kRoundTripTol * (1 + std::abs(c1)) * 10);
-    ASSERT_LE(q.normalized().distanceUpToSign(u), 10 * kRoundTripTol);
+    ASSERT_NEAR(q.norm().dual, c1, kNonUnitTol * (1 + std::abs(c1)));
+    ASSERT_LE(q.normalized().distanceUpToSign(u), kNonUnitTol);
     // |p q| = |p| |q| for dual-number norms (Kavan §3).
     const DualQuaternion p = v * 2.5;
     const DualNumber np = p.norm(), nq = q.norm(), npq = (p * q).norm();
-    ASSERT_NEAR(npq.real, np.real * nq.real, 10 * kRoundTripTol * npq.real);
+    ASSERT_NEAR(npq.real, np.real * nq.real, kNonUnitTol * npq.real);
     ASSERT_NEAR(npq.dual, np.real * nq.dual + np.dual * nq.real,
-                10 * kRoundTripTol * (1 + std::abs(npq.dual)));
+                kNonUnitTol * (1 + std::abs(npq.dual)));
   }
   const DualQuaternion purelyDual(Eigen::Quaterniond(0, 0, 0, 0), Eigen::Quaterniond(1, 0, 0, 0));
   EXPECT_THROW(purelyDual.normalized(), DomainError);
@@ -183,7 +193,7 @@ TEST(DualQuaternion, LogAtTheAntipodalSingularity) {
   const DualQuaternion near = DualQuaternion::exp(
       DualQuaternion::pure((kPi - 1e-3) * Eigen::Vector3d(0, 0, 1), Eigen::Vector3d(1, 2, 3)));
   ASSERT_LT(near.real().w(), 0.0);
-  EXPECT_LE(DualQuaternion::exp(near.log()).distanceUpToSign(near), kOracleTol * 1e3);
+  EXPECT_LE(DualQuaternion::exp(near.log()).distanceUpToSign(near), kLogNearPiTol);
 }
 
 TEST(DualQuaternion, PowerIsTheMatrixPower) {
@@ -194,10 +204,10 @@ TEST(DualQuaternion, PowerIsTheMatrixPower) {
     const Eigen::Matrix4d logH = h.log();
     for (double t : {-0.7, 0.3, 0.5, 2.0}) {
       const Eigen::Matrix4d oracle = (t * logH).exp();
-      ASSERT_LE((q.power(t).toMatrix() - oracle).norm(), 10 * kOracleTol * oracle.norm())
+      ASSERT_LE((q.power(t).toMatrix() - oracle).norm(), kLogOracleTol * oracle.norm())
           << "sample " << i << " t " << t;
     }
-    ASSERT_LE((q.power(0.5) * q.power(0.5)).distanceUpToSign(q), 10 * kOracleTol);
+    ASSERT_LE((q.power(0.5) * q.power(0.5)).distanceUpToSign(q), kPowerRoundTripTol);
   }
 }
 
