@@ -113,7 +113,10 @@ bool svdClosedForm(const Eigen::Matrix3d& a, Eigen::Matrix3d& u, Eigen::Vector3d
   const Eigen::Vector3d mu = symEigenvalues(m);
   if (!(mu(2) > 0.0) || !(mu(0) <= kClosedFormMaxCond * kClosedFormMaxCond * mu(2))) return false;
   v.setIdentity();
-  if (mu(0) > mu(2)) {
+  // Eigenvalues equal to within the residual bound (A a multiple of a
+  // rotation, up to rounding): any orthonormal V fits, and the shifted
+  // matrix below is rounding noise that can cancel to zero, so V stays I.
+  if (mu(0) - mu(2) > kClosedFormMaxResidual * mu(0)) {
     // The eigenvalue farther from the middle one is separated from the other
     // two by at least half the spread: its eigenvector is well determined.
     const int iso = mu(0) - mu(1) >= mu(1) - mu(2) ? 0 : 2;

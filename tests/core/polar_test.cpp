@@ -177,6 +177,29 @@ TEST(Polar, ClosedFormOnCoincidentSingularValues) {
   }
 }
 
+TEST(Polar, ClosedFormTakesMultiplesOfARotation) {
+  // Regression: for c R the eigenvalues of A^T A agree to an ulp, the shifted
+  // matrix c^2 I - A^T A can round to rows that are exactly parallel or zero,
+  // and the closed form declined (seeds 50, 129 and 144 of
+  // ClosedFormTakenUpToTheCondThreshold; this A is seed 50's). Accepted now,
+  // with R and log S = log(c) I to round-off.
+  Eigen::Matrix3d seed50;
+  seed50 << -0.041317637988198874, 0.0011382026049502128, -0.047837303252957632,
+      0.019880131722336755, 0.057898256509024686, -0.015793117251730972, 0.04352566427279296,
+      -0.025364279699105735, -0.038197122425214815;
+  std::vector<Eigen::Matrix3d> matrices = {seed50};
+  std::mt19937 rng(testSeed("Polar.ClosedFormTakesMultiplesOfARotation"));
+  for (int i = 0; i < 500; ++i) {
+    matrices.push_back(std::exp(core_test::uniform(rng, -6, 6)) * core_test::randomRotation(rng));
+  }
+  for (const Eigen::Matrix3d& a : matrices) {
+    SCOPED_TRACE(testing::Message() << "A =\n" << a);
+    PolarLogDecomposition p;
+    ASSERT_TRUE(polar_detail::polarLogClosedForm(a, p));
+    expectClosedFormMatchesSvd(a, p, 1.0);
+  }
+}
+
 TEST(Polar, ClosedFormResidualCheckRejectsAReflection) {
   // The a-posteriori residual (polar_detail::kClosedFormMaxResidual) is what
   // rejects a well-conditioned A the closed form cannot represent: with
