@@ -170,11 +170,37 @@ bool svdClosedForm(const Eigen::Matrix3d& a, Eigen::Matrix3d& u, Eigen::Vector3d
          kClosedFormMaxResidual * kClosedFormMaxResidual * a.squaredNorm();
 }
 
+namespace {
+
+// One first-order correction of an approximate polar factor R0 of A (with
+// A = U diag(sigma) V^T, R0 = U V^T): the exact R = R0 (I + [w]x) makes
+// S = R^T A symmetric, i.e. H - H^T = [w]x S + S [w]x = [(tr S I - S) w]x for
+// H = R0^T A, solved in S's eigenbasis V, where (tr S I - S) is diagonal
+// with entries sigma_j + sigma_k > 0. The closed form's R0 carries up to
+// 32 eps * cond(A) of error (its accepted residual times the polar factor's
+// condition); after the step, eps * cond(A) to first order. |w| stays at
+// that size, so I + [w]x is orthonormal to |w|^2, far below round-off.
+Eigen::Matrix3d refinedRotation(const Eigen::Matrix3d& r0, const Eigen::Matrix3d& a,
+                                const Eigen::Vector3d& sigma, const Eigen::Matrix3d& v) {
+  const Eigen::Matrix3d h = r0.transpose() * a;
+  const Eigen::Vector3d skew(h(2, 1) - h(1, 2), h(0, 2) - h(2, 0), h(1, 0) - h(0, 1));
+  const Eigen::Vector3d skewInV = v.transpose() * skew;
+  const double trace = sigma.sum();
+  const Eigen::Vector3d w =
+      v * Eigen::Vector3d(skewInV(0) / (trace - sigma(0)), skewInV(1) / (trace - sigma(1)),
+                          skewInV(2) / (trace - sigma(2)));
+  Eigen::Matrix3d cross;
+  cross << 0.0, -w(2), w(1), w(2), 0.0, -w(0), -w(1), w(0), 0.0;
+  return r0 + r0 * cross;
+}
+
+}  // namespace
+
 bool polarLogClosedForm(const Eigen::Matrix3d& a, PolarLogDecomposition& out) {
   Eigen::Matrix3d u, v;
   Eigen::Vector3d sigma;
   if (!svdClosedForm(a, u, sigma, v)) return false;
-  out.rotation = u * v.transpose();
+  out.rotation = refinedRotation(u * v.transpose(), a, sigma, v);
   const Eigen::Matrix3d logS = v * sigma.array().log().matrix().asDiagonal() * v.transpose();
   out.stretchLog = 0.5 * (logS + logS.transpose());
   return true;

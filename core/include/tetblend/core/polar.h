@@ -70,9 +70,11 @@ constexpr double kClosedFormMaxResidual = 32 * 2.220446049250313e-16;
 /// the other two from the 2x2 problem in its orthogonal complement (Eberly,
 /// "A Robust Eigensolver for 3x3 Symmetric Matrices"), V right-handed;
 /// sigma_i = |A v_i|, U = A V Sigma^-1 re-orthonormalised (Gram–Schmidt,
-/// u3 = u1 x u2), R = U V^T, log S = V log(Sigma) V^T. Returns false (and
-/// leaves `out` unspecified) if cond(A) > kClosedFormMaxCond or the residual
-/// exceeds kClosedFormMaxResidual.
+/// u3 = u1 x u2), R = U V^T refined by one first-order step that makes
+/// R^T A symmetric (the residual bound alone allows 32 eps * cond(A) of error
+/// in R; after the step about eps * cond(A)), log S = V log(Sigma) V^T.
+/// Returns false (and leaves `out` unspecified) if cond(A) >
+/// kClosedFormMaxCond or the residual exceeds kClosedFormMaxResidual.
 bool polarLogClosedForm(const Eigen::Matrix3d& a, PolarLogDecomposition& out);
 
 /// The factors of polarLogClosedForm: A = U diag(sigma) V^T with U, V
