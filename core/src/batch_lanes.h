@@ -77,9 +77,10 @@ TETBLEND_LANE bool symExpLane(const Sym& y, Sym& out) {
   const double l1 = lambda1 - lambda2, l3 = lambda3 - lambda2, h = l1 - l3;
   // exp(lambda2), expm1(l1), expm1(l3) in range (|l1|, |l3| <= h); the
   // scalar kernel's closed-form range, so the rest goes to its fallback.
-  static_assert(sym3_detail::kExpDirectMaxArg <= lane_math::kExpMaxArg);
+  static_assert(sym3_detail::kExpDirectMaxArg <= lane_math::kExpMaxArg &&
+                sym3_detail::kExpDirectMaxSpread <= lane_math::kExpMaxArg);
   const bool ok = (std::max(std::abs(lambda1), std::abs(lambda3)) <= sym3_detail::kExpDirectMaxArg) &
-                  (h <= sym3_detail::kExpDirectMaxArg);
+                  (h <= sym3_detail::kExpDirectMaxSpread);
   double e2, unused, em1, em3;
   lane_math::expExpm1Lane(ok ? lambda2 : 0.0, e2, unused);
   lane_math::expExpm1Lane(ok ? l1 : 0.0, unused, em1);

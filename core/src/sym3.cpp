@@ -198,7 +198,7 @@ Eigen::Matrix3d symExp(const Eigen::Matrix3d& y) {
   const double h = l1 - l3;
   // Negated so that NaN (entries beyond ~1e154 overflow the cubic) also leaves.
   if (!(std::max(std::abs(lambda(0)), std::abs(lambda(2))) <= sym3_detail::kExpDirectMaxArg &&
-        h <= sym3_detail::kExpDirectMaxArg)) {
+        h <= sym3_detail::kExpDirectMaxSpread)) {
     return symExpByEigenDecomposition(y);
   }
   // Newton form of the interpolating quadratic at the nodes (0, l1, l3) of

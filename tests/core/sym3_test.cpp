@@ -246,6 +246,28 @@ TEST(Sym3, ExpOfWideSpreadIsFinite) {
             kTolPerSpread);
 }
 
+TEST(Sym3, ExpOnBothSidesOfTheDirectSpreadIsAccurate) {
+  // Just below sym3_detail::kExpDirectMaxSpread the closed form (its error
+  // grows to ~10 ulps per unit of spread there), just above the
+  // eigen-decomposition (~6 ulps per unit of |Y|), and far above it, where
+  // the closed form had reached 40 ulps per unit (seeds 42 and 99991 of
+  // ExpOfWideSpreadIsFinite): against the construction, within the suite's
+  // bound per unit of spread and size.
+  const double limit = sym3_detail::kExpDirectMaxSpread;
+  std::mt19937 rng(testSeed("Sym3.ExpOnBothSidesOfTheDirectSpreadIsAccurate"));
+  for (const double spreadValue : {0.99 * limit, 1.01 * limit, 3.0 * limit, 6.99 * limit}) {
+    for (int i = 0; i < 200; ++i) {
+      const double middle = uniform(rng, -0.5, 0.5) * spreadValue;
+      const Eigen::Vector3d spectrum(0.5 * spreadValue, middle, -0.5 * spreadValue);
+      const SymCase c{randomRotation(rng), spectrum};
+      const Eigen::Matrix3d y = 0.5 * (c.matrix() + c.matrix().transpose());
+      const double size = spread(spectrum) + spectrum.cwiseAbs().maxCoeff();
+      ASSERT_LE(relativeError(symExp(y), c.exp()), kTolPerSpread * (1.0 + size))
+          << "eigenvalues " << spectrum.transpose();
+    }
+  }
+}
+
 TEST(Sym3, ExpNearOverflowIsFiniteAndAboveItThrows) {
   // e^710.5 overflows double but exp(710.5 u u^T) = I + (e^710.5 - 1) u u^T,
   // u = (1, 1, 1)/sqrt 3, has entries ~1.2e308: finite, so returned.
