@@ -208,7 +208,7 @@ void SupernodalFactor::backward(int begin, int end, double* yv, UpdateMatrix& u,
 }
 
 // Solves L L^T y = b in place on `y` (permuted order, #free by 3). The
-// postordered supernodes [low, split) and [split, top) (chosen by findSplit)
+// postordered supernodes [0, split) and [split, top) (chosen by findSplit)
 // are unions of whole subtrees of the elimination tree with no ancestor in
 // each other, so they share only the rows of supernodes >= top and run on
 // two threads; the forward pass sends their updates of rows >= the first
@@ -231,20 +231,18 @@ void SupernodalFactor::solve(RowMatrix3& y, SupernodalWorkspace& workspace) cons
   }
   const int topRow = super[top_];
   for (auto& b : shared) b.setZero(n - topRow, 3);
-  forward(0, low_, yv, update[0], column[0], n, nullptr, true);
   tbb::parallel_invoke(
-      [&] { forward(low_, split_, yv, update[0], column[0], topRow, shared[0].data(), false); },
+      [&] { forward(0, split_, yv, update[0], column[0], topRow, shared[0].data(), false); },
       [&] { forward(split_, top_, yv, update[1], column[1], topRow, shared[1].data(), false); });
   y.bottomRows(n - topRow) += shared[0];
   y.bottomRows(n - topRow) += shared[1];
   forward(top_, nsuper, yv, update[0], column[0], n, nullptr, true);
   backward(top_, nsuper, yv, update[0], column[0], true);
-  tbb::parallel_invoke([&] { backward(low_, split_, yv, update[0], column[0], false); },
+  tbb::parallel_invoke([&] { backward(0, split_, yv, update[0], column[0], false); },
                        [&] { backward(split_, top_, yv, update[1], column[1], false); });
-  backward(0, low_, yv, update[0], column[0], true);
 }
 
-// Chooses `low_` = 0, `split_` and `top_`. In a postorder every prefix
+// Chooses `split_` and `top_`. In a postorder every prefix
 // [0, split) is a union of whole subtrees; [split, top) is one too when
 // `top` is the parent of supernode split - 1 (a supernode in between whose
 // subtree reached below split would be an ancestor of split - 1 smaller
@@ -283,7 +281,6 @@ void SupernodalFactor::findSplit() {
         std::max(entries(0, split), entries(split, top)) + entries(top, nsuper);
     if (cost < bestCost) {
       bestCost = cost;
-      low_ = 0;
       split_ = split;
       top_ = top;
     }

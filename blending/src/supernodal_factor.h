@@ -71,7 +71,6 @@ class SupernodalFactor {
   Eigen::Index maxUpdateRows_ = 0;   // largest off-diagonal block of a supernode
   Eigen::Index maxColumns_ = 0;      // widest supernode
   int top_ = 0;                      // see findSplit
-  int low_ = 0;
   int split_ = 0;
 };
 
