@@ -44,7 +44,7 @@ void blendSeries(const ModelData& model, const BlendSettings& settings,
   const ShapeBlender blender =
       makeBlender(model, {method}, parseOnOff(settings.consistency, "--consistency"),
                   settings.nonlinear, figures.targetResidual);
-  const RestTetData restData = restTetData(model.rest);
+  const RestTetData restData = modelRestData(model);
   ProgressBar progress("blend", items.size(), quiet);
   std::vector<PvdDataSet> sets;
   std::ostringstream csv;

@@ -213,7 +213,7 @@ class JobRunner {
       : setup_(setup),
         limit_(setup.threads),
         figures_(qualityFigures(setup.arrays, !setup.spec.surfaceOnly)),
-        restData_(restTetData(setup.model.rest)) {
+        restData_(modelRestData(setup.model)) {
     const BatchSpec& spec = setup.spec;
     std::vector<BlendMethod> methods;
     for (std::size_t i : pendingJobs) {

@@ -53,6 +53,14 @@ TetQuality tetQuality(const TetMesh& rest, const RestTetData& restData, const Ve
   if (figures.rotationAngle) q.rotationAngle.resize(count);
   const bool decompose = figures.distortion || figures.rotationAngle;
   blend_detail::forEachTet(count, [&](int j) {
+    if (std::isnan(restData.volumes[j])) {
+      q.inverted[j] = 0;
+      q.volumeRatio[j] = kNaN;
+      if (figures.targetResidual) q.stitchResidual[j] = kNaN;
+      if (figures.distortion) q.conditionNumber[j] = kNaN;
+      if (figures.rotationAngle) q.rotationAngle[j] = kNaN;
+      return;
+    }
     const Eigen::Matrix3d f = tetEdgeMatrix(result, rest.tets.row(j)) * restData.inverseEdges[j];
     const double det = f.determinant();
     q.inverted[j] = det <= 0.0 ? 1 : 0;

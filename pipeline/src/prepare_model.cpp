@@ -14,6 +14,7 @@
 #include "tetblend/meshing/tetgen_mesher.h"
 #include "tetblend/meshing/tetrisation.h"
 #include "tetblend/pipeline/format_number.h"
+#include "meshed_rest.h"
 
 namespace tetblend {
 namespace {
@@ -62,6 +63,29 @@ double worstVolumeRatio(const TetMesh& rest, const CompatibleTetResult& placed) 
   return worst;
 }
 
+// The warning for a rest that intersects itself: what was meshed instead,
+// and the tets of the rest that its embedding leaves inverted.
+std::string separatedRestWarning(const std::string& restName, const MeshedRest& meshed,
+                                 const TetMesh& tets, const CompatibleTetResult& embedded) {
+  const Vertices& v = meshed.surface.vertices;
+  const double diagonal = (v.colwise().maxCoeff() - v.colwise().minCoeff()).norm();
+  std::string line = restName + ": its surface intersects itself at " +
+                     std::to_string(meshed.intersectingPairs) + " face pair" +
+                     (meshed.intersectingPairs > 1 ? "s" : "") + ", first faces " +
+                     std::to_string(meshed.firstPair.first) + " and " +
+                     std::to_string(meshed.firstPair.second) + "; the tets were made on a copy with " +
+                     std::to_string(meshed.movedVertices) + " vertices moved apart by at most " +
+                     threeDigits(meshed.largestDisplacement) + " (" +
+                     threeDigits(100.0 * meshed.largestDisplacement / diagonal) +
+                     " % of the bounding-box diagonal), and the rest is embedded in them";
+  if (embedded.invertedTets.empty()) return line + " with no tet inverted";
+  return line + "; " + std::to_string(embedded.invertedTets.size()) +
+         " tets of the rest cannot be embedded (worst volume ratio " +
+         threeDigits(worstVolumeRatio(tets, embedded)) + ", first tet " +
+         std::to_string(embedded.invertedTets.front()) +
+         "): they are left out of the stitch of every blend";
+}
+
 // The checks that need no surface: examples given, a valid quality bound.
 void checkPrepareArguments(std::size_t exampleCount, const PrepareOptions& options) {
   if (exampleCount == 0) throw InputError("give at least one example surface");
@@ -85,43 +109,6 @@ void refuseSelfIntersecting(const Triangles& triangles, const std::vector<Surfac
   }
 }
 
-// The rest surface as it is meshed: the user's faces, then the triangles that
-// close its holes (none for the tetrisation, or with options.fillHoles off).
-// `filling` says what was added.
-SurfaceMesh closedRest(const SurfaceMesh& rest, const std::string& restName,
-                       const PrepareOptions& options, HoleFilling& filling) {
-  if (options.tetrise || !options.fillHoles) return rest;
-  filling = fillHoles(rest, restName);
-  SurfaceMesh closed{rest.vertices, Triangles(rest.triangles.rows() + filling.triangles.rows(), 3)};
-  closed.triangles << rest.triangles, filling.triangles;
-  return closed;
-}
-
-// requireValidRest of the closed rest, whose faces from `userFaceCount` on
-// fill its holes: a fill triangle that intersects the surface is named as
-// such, before the problems it may cause (e.g. a wrong nesting).
-void requireValidClosedRest(const SurfaceMesh& closed, Eigen::Index userFaceCount,
-                            const std::string& restName,
-                            const SurfaceValidationOptions& validation) {
-  const SurfaceValidation checked = validateSurface(closed, restName, validation);
-  if (checked.ok()) return;
-  for (const SurfaceProblem& problem : checked.problems) {
-    const long long other = static_cast<long long>(problem.value);
-    if (problem.kind == SurfaceProblemKind::kSelfIntersection &&
-        std::max(problem.element, other) >= userFaceCount) {
-      const long long face = std::min(problem.element, other);
-      throw InputError(
-          restName + ": " +
-          (face < userFaceCount
-               ? "a triangle filling one of its holes intersects face " + std::to_string(face)
-               : std::string("two triangles filling its holes intersect")) +
-          ": the holes cannot be closed without new vertices; close them yourself, "
-          "or use the per-face tetrisation");
-    }
-  }
-  requireValidRest(closed, restName, validation);
-}
-
 }  // namespace
 
 std::size_t prepareStepCount(std::size_t exampleCount) { return exampleCount + 2; }
@@ -143,11 +130,20 @@ ModelData prepareModel(const SurfaceMesh& rest, const std::vector<SurfaceMesh>& 
     throw InputError("prepare: " + std::to_string(exampleNames.size()) + " names given for " +
                      std::to_string(examples.size()) + " examples");
   }
-  SurfaceValidationOptions validation;
-  validation.requireClosed = !options.tetrise;
-  HoleFilling filling;
-  const SurfaceMesh closed = closedRest(rest, restName, options, filling);
-  requireValidClosedRest(closed, rest.triangles.rows(), restName, validation);
+  MeshedRest meshed;
+  if (options.tetrise) {
+    SurfaceValidationOptions validation;
+    validation.requireClosed = false;
+    requireValidRest(rest, restName, validation);
+    meshed.surface = rest;
+  } else {
+    meshed = meshedRest(rest, restName, options);
+  }
+  if (meshed.reorientedFaces > 0) {
+    say(messages.warning, restName + ": " + std::to_string(meshed.reorientedFaces) +
+                              " faces point inwards or against their neighbours: they are meshed "
+                              "reversed (the blended surfaces keep the input's faces)");
+  }
   for (std::size_t k = 0; k < examples.size(); ++k) {
     requireCompatibleExample(rest, examples[k], exampleNames[k]);
     if (examples[k].vertices == rest.vertices) {
@@ -155,7 +151,7 @@ ModelData prepareModel(const SurfaceMesh& rest, const std::vector<SurfaceMesh>& 
                                 "): blending this example changes nothing");
     }
   }
-  if (options.strict) refuseSelfIntersecting(closed.triangles, examples, exampleNames);
+  if (options.strict) refuseSelfIntersecting(meshed.surface.triangles, examples, exampleNames);
   advance(messages, 1);
 
   ModelData model;
@@ -174,7 +170,7 @@ ModelData prepareModel(const SurfaceMesh& rest, const std::vector<SurfaceMesh>& 
   tetgen.maxRadiusEdgeRatio = options.radiusEdgeRatio;
   tetgen.maxTetVolume = options.maxVolume.value_or(0.0);
   tetgen.sourceName = restName;
-  const TetMesh tets = tetrahedralize(closed, tetgen);
+  const TetMesh tets = tetrahedralize(meshed.surface, tetgen);
   advance(messages, 1);
   if (tets.tets.rows() > kLargeMeshWarningTets) {
     say(messages.warning, restName + ": " + roughCount(tets.tets.rows()) +
@@ -182,33 +178,46 @@ ModelData prepareModel(const SurfaceMesh& rest, const std::vector<SurfaceMesh>& 
                               formatNumber(std::round(tets.tets.rows() / 1e5) / 10) +
                               " GB of memory (a coarser mesh: a larger --quality, e.g. 3)");
   }
+  // A separated rest is embedded in the tets like a pose, before the examples.
+  const std::size_t first = meshed.separated ? 1 : 0;
   std::vector<Vertices> surfaces;
+  if (meshed.separated) surfaces.push_back(rest.vertices);
   for (const SurfaceMesh& example : examples) surfaces.push_back(example.vertices);
+  std::size_t placed = 0;
   CompatibleTetMeshes built = buildCompatibleTetMeshes(
       tets, model.surfaceVertexCount, surfaces, ExampleAwareOptions{}, [&](const char* stage) {
-        if (std::string(stage) == "place") advance(messages, 1);
+        if (std::string(stage) == "place" && placed++ >= first) advance(messages, 1);
       });
-  model.rest = std::move(built.rest);
+  if (meshed.separated) {
+    const CompatibleTetResult& embedded = built.examples.front();
+    say(messages.warning, separatedRestWarning(restName, meshed, built.rest, embedded));
+    model.excludedTets = embedded.invertedTets;
+  }
   for (std::size_t k = 0; k < examples.size(); ++k) {
-    CompatibleTetResult& placed = built.examples[k];
-    if (!placed.invertedTets.empty()) {
-      const std::string what = exampleNames[k] + ": " + std::to_string(placed.invertedTets.size()) +
+    CompatibleTetResult& example = built.examples[k + first];
+    if (!example.invertedTets.empty()) {
+      const std::string what = exampleNames[k] + ": " +
+                               std::to_string(example.invertedTets.size()) +
                                " tets cannot be embedded (worst volume ratio " +
-                               threeDigits(worstVolumeRatio(model.rest, placed)) + ", first tet " +
-                               std::to_string(placed.invertedTets.front()) + "); " +
-                               diagnosis(built.selfIntersections[k]);
+                               threeDigits(worstVolumeRatio(built.rest, example)) + ", first tet " +
+                               std::to_string(example.invertedTets.front()) + "); " +
+                               diagnosis(built.selfIntersections[k + first]);
       if (options.strict) {
         throw InputError(what + ": leave out --strict to exclude those tets from the stitch");
       }
       say(messages.warning, what + ": they are left out of the stitch of every blend");
-      model.excludedTets.insert(model.excludedTets.end(), placed.invertedTets.begin(),
-                                placed.invertedTets.end());
+      model.excludedTets.insert(model.excludedTets.end(), example.invertedTets.begin(),
+                                example.invertedTets.end());
     }
-    model.examples.push_back(std::move(placed.vertices));
+    model.examples.push_back(std::move(example.vertices));
   }
+  model.rest.tets = std::move(built.rest.tets);
+  model.rest.vertices = meshed.separated ? std::move(built.examples.front().vertices)
+                                         : std::move(built.rest.vertices);
   std::sort(model.excludedTets.begin(), model.excludedTets.end());
   model.excludedTets.erase(std::unique(model.excludedTets.begin(), model.excludedTets.end()),
                            model.excludedTets.end());
+  const HoleFilling& filling = meshed.filling;
   const std::string filled =
       filling.holeCount == 0
           ? ""

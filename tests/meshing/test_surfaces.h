@@ -109,8 +109,9 @@ inline SurfaceMesh reversed(SurfaceMesh m) {
   return m;
 }
 
-/// Icosahedron subdivided once (42 vertices, 80 faces) on the unit sphere.
-inline SurfaceMesh icosphere() {
+/// Icosahedron subdivided `levels` times (each face into four; once: 42
+/// vertices, 80 faces; three times: 642 and 1280) on the unit sphere.
+inline SurfaceMesh icosphere(int levels = 1) {
   const double t = (1.0 + std::sqrt(5.0)) / 2.0;
   std::vector<Eigen::Vector3d> v = {{-1, t, 0}, {1, t, 0}, {-1, -t, 0}, {1, -t, 0},
                                     {0, -1, t}, {0, 1, t}, {0, -1, -t}, {0, 1, -t},
@@ -119,29 +120,30 @@ inline SurfaceMesh icosphere() {
                                        {1, 5, 9},  {5, 11, 4}, {11, 10, 2}, {10, 7, 6}, {7, 1, 8},
                                        {3, 9, 4},  {3, 4, 2},  {3, 2, 6},   {3, 6, 8},  {3, 8, 9},
                                        {4, 9, 5},  {2, 4, 11}, {6, 2, 10},  {8, 6, 7},  {9, 8, 1}};
-  std::map<std::pair<int, int>, int> midpoint;
-  auto mid = [&](int a, int b) {
-    const auto key = std::minmax(a, b);
-    auto it = midpoint.find(key);
-    if (it != midpoint.end()) return it->second;
-    v.push_back((v[a] + v[b]) / 2.0);
-    return midpoint[key] = static_cast<int>(v.size()) - 1;
-  };
-  std::vector<std::array<int, 3>> fine;
-  for (const auto& tri : f) {
-    const int ab = mid(tri[0], tri[1]), bc = mid(tri[1], tri[2]), ca = mid(tri[2], tri[0]);
-    fine.push_back({tri[0], ab, ca});
-    fine.push_back({tri[1], bc, ab});
-    fine.push_back({tri[2], ca, bc});
-    fine.push_back({ab, bc, ca});
+  for (int level = 0; level < levels; ++level) {
+    std::map<std::pair<int, int>, int> midpoint;
+    auto mid = [&](int a, int b) {
+      const auto key = std::minmax(a, b);
+      auto it = midpoint.find(key);
+      if (it != midpoint.end()) return it->second;
+      v.push_back((v[a] + v[b]) / 2.0);
+      return midpoint[key] = static_cast<int>(v.size()) - 1;
+    };
+    std::vector<std::array<int, 3>> fine;
+    for (const auto& tri : f) {
+      const int ab = mid(tri[0], tri[1]), bc = mid(tri[1], tri[2]), ca = mid(tri[2], tri[0]);
+      fine.push_back({tri[0], ab, ca});
+      fine.push_back({tri[1], bc, ab});
+      fine.push_back({tri[2], ca, bc});
+      fine.push_back({ab, bc, ca});
+    }
+    f = std::move(fine);
   }
   SurfaceMesh m;
   m.vertices.resize(static_cast<Eigen::Index>(v.size()), 3);
   for (std::size_t i = 0; i < v.size(); ++i) m.vertices.row(i) = v[i].normalized().transpose();
-  m.triangles.resize(static_cast<Eigen::Index>(fine.size()), 3);
-  for (std::size_t i = 0; i < fine.size(); ++i) {
-    m.triangles.row(i) << fine[i][0], fine[i][1], fine[i][2];
-  }
+  m.triangles.resize(static_cast<Eigen::Index>(f.size()), 3);
+  for (std::size_t i = 0; i < f.size(); ++i) m.triangles.row(i) << f[i][0], f[i][1], f[i][2];
   return m;
 }
 

@@ -56,7 +56,9 @@ struct QualitySummary {
 /// Quality of `result` (#V by 3) for `rest` (#V vertices, #T tets) with rest
 /// data `restData` (restTetData(rest)) and the blended maps `targets` (#T,
 /// or empty for a blend without maps, e.g. vertex-linear), with the figures
-/// `figures` asks for. Parallel over tets. Throws InputError on size
+/// `figures` asks for. A tet whose rest volume is NaN (a tet left out of the
+/// stitch that the rest itself inverts, see modelRestData) gets NaN figures
+/// and counts as not inverted. Parallel over tets. Throws InputError on size
 /// mismatches.
 TetQuality tetQuality(const TetMesh& rest, const RestTetData& restData, const Vertices& result,
                       const std::vector<Eigen::Matrix3d>& targets,

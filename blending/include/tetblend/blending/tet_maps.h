@@ -16,7 +16,9 @@ namespace tetblend {
 struct RestTetData {
   /// #T inverse edge matrices D_0j^-1 (edges p1-p0, p2-p0, p3-p0 as columns).
   std::vector<Eigen::Matrix3d> inverseEdges;
-  /// #T rest volumes (positive), in the rest mesh's length unit cubed.
+  /// #T rest volumes (positive; NaN, with a NaN inverse, only for tets a
+  /// caller leaves out, see modelRestData), in the rest mesh's length unit
+  /// cubed.
   std::vector<double> volumes;
 };
 

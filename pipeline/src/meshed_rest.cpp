@@ -1,0 +1,120 @@
+#include "meshed_rest.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "tetblend/core/error.h"
+#include "tetblend/meshing/self_intersection.h"
+#include "tetblend/meshing/surface_orientation.h"
+#include "tetblend/meshing/surface_separation.h"
+#include "tetblend/meshing/surface_validation.h"
+#include "tetblend/pipeline/format_number.h"
+
+namespace tetblend {
+namespace {
+
+// Orients `mesh` consistently and outward where it can; a surface that cannot
+// be oriented (non-manifold, Möbius-like) is left as it is, for the
+// validation to name the problem.
+void orientWherePossible(SurfaceMesh& mesh) {
+  try {
+    orientConsistently(mesh);
+  } catch (const InputError&) {
+  }
+}
+
+// The user's faces, then the triangles that close its holes (none with
+// options.fillHoles off).
+SurfaceMesh closedSurface(const SurfaceMesh& oriented, const std::string& restName,
+                          const PrepareOptions& options, HoleFilling& filling) {
+  if (!options.fillHoles) return oriented;
+  filling = fillHoles(oriented, restName);
+  SurfaceMesh closed{oriented.vertices,
+                     Triangles(oriented.triangles.rows() + filling.triangles.rows(), 3)};
+  closed.triangles << oriented.triangles, filling.triangles;
+  return closed;
+}
+
+// A triangle filling a hole that intersects the surface: the fill is fixed by
+// the rest for every example, so it cannot be separated away.
+void refuseCutFill(const SelfIntersections& found, Eigen::Index userFaceCount,
+                   const std::string& restName) {
+  for (const auto& [f, g] : found.pairs) {
+    if (std::max(f, g) < userFaceCount) continue;
+    const long long face = std::min(f, g);
+    throw InputError(
+        restName + ": " +
+        (face < userFaceCount
+             ? "a triangle filling one of its holes intersects face " + std::to_string(face)
+             : std::string("two triangles filling its holes intersect")) +
+        ": the holes cannot be closed without new vertices; close them yourself, "
+        "or use the per-face tetrisation");
+  }
+}
+
+// The face pairs a validation lists as intersecting.
+SelfIntersections listedPairs(const SurfaceValidation& checked) {
+  SelfIntersections listed;
+  for (const SurfaceProblem& problem : checked.problems) {
+    if (problem.kind != SurfaceProblemKind::kSelfIntersection) continue;
+    listed.pairs.emplace_back(static_cast<int>(problem.element), static_cast<int>(problem.value));
+    ++listed.pairCount;
+  }
+  return listed;
+}
+
+int differingRows(const Triangles& a, const Triangles& b) {
+  int count = 0;
+  for (Eigen::Index f = 0; f < a.rows(); ++f) count += a.row(f) == b.row(f) ? 0 : 1;
+  return count;
+}
+
+}  // namespace
+
+MeshedRest meshedRest(const SurfaceMesh& rest, const std::string& restName,
+                      const PrepareOptions& options) {
+  MeshedRest meshed;
+  SurfaceMesh oriented = rest;
+  orientWherePossible(oriented);
+  meshed.surface = closedSurface(oriented, restName, options, meshed.filling);
+  orientWherePossible(meshed.surface);
+  const Eigen::Index userFaces = rest.triangles.rows();
+  meshed.reorientedFaces = differingRows(meshed.surface.triangles.topRows(userFaces), rest.triangles);
+
+  const SurfaceValidation checked = validateSurface(meshed.surface, restName);
+  if (checked.ok()) return meshed;
+  const bool onlyIntersections =
+      std::all_of(checked.problems.begin(), checked.problems.end(), [](const SurfaceProblem& p) {
+        return p.kind == SurfaceProblemKind::kSelfIntersection;
+      });
+  if (!onlyIntersections || options.strict) {
+    refuseCutFill(listedPairs(checked), userFaces, restName);
+    requireValidRest(meshed.surface, restName);
+  }
+
+  const SelfIntersections found = findSelfIntersections(
+      meshed.surface.vertices, meshed.surface.triangles, std::numeric_limits<std::size_t>::max());
+  refuseCutFill(found, userFaces, restName);
+  meshed.intersectingPairs = found.pairCount;
+  meshed.firstPair = found.pairs.front();
+  const SurfaceSeparationOptions separation;
+  const auto separated = separateSelfIntersections(meshed.surface, separation);
+  if (!separated) {
+    throw InputError(restName + ": faces " + std::to_string(meshed.firstPair.first) + " and " +
+                     std::to_string(meshed.firstPair.second) + " intersect (" +
+                     std::to_string(found.pairCount) +
+                     " intersecting pairs in total), too deeply to separate by moving vertices "
+                     "by up to " +
+                     formatNumber(100.0 * separation.maxDisplacement) +
+                     " % of the bounding-box diagonal: repair the surface (e.g. CGAL's "
+                     "autorefine or MeshLab) before meshing");
+  }
+  meshed.separated = true;
+  meshed.movedVertices = separated->movedVertices;
+  meshed.largestDisplacement = separated->largestDisplacement;
+  meshed.surface.vertices = separated->vertices;
+  return meshed;
+}
+
+}  // namespace tetblend

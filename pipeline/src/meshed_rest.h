@@ -1,0 +1,43 @@
+#pragma once
+// Private to prepare: the rest surface as TetGen meshes it. The user's faces
+// stay the model's (and every output's); what is meshed is closed (holes
+// filled), oriented outward, and free of self-intersections, where the
+// user's rest may lack the last two.
+
+#include <cstddef>
+#include <string>
+#include <utility>
+
+#include "tetblend/meshing/hole_filling.h"
+#include "tetblend/pipeline/prepare_model.h"
+
+namespace tetblend {
+
+/// The surface TetGen meshes, and how it differs from the user's rest.
+struct MeshedRest {
+  /// The user's vertices (or, when `separated`, the separated copy's) and
+  /// faces: the user's, reoriented where needed, then the hole fill's.
+  SurfaceMesh surface;
+  HoleFilling filling;
+  int reorientedFaces = 0;  ///< user's faces meshed reversed
+  /// The user's rest intersects itself: `surface` holds a separated copy
+  /// (surface_separation.h), and the user's rest is embedded like a pose.
+  bool separated = false;
+  std::size_t intersectingPairs = 0;      ///< of the user's rest (closed)
+  std::pair<int, int> firstPair{-1, -1};  ///< its first intersecting faces
+  int movedVertices = 0;                  ///< by the separation
+  double largestDisplacement = 0.0;       ///< by the separation, file units
+};
+
+/// The meshed rest of `rest` (read from `restName`). Faces that point inwards
+/// or against their neighbours are reversed for meshing; holes are filled
+/// unless options.fillHoles is off; a rest that intersects itself is
+/// separated unless options.strict. Throws InputError with the first problem
+/// when the rest cannot be meshed: non-manifold, open with fillHoles off, a
+/// hole fill that cuts the surface, or self-intersections too deep to
+/// separate (or any, with strict). Not for the tetrisation, which meshes the
+/// user's faces as they are.
+MeshedRest meshedRest(const SurfaceMesh& rest, const std::string& restName,
+                      const PrepareOptions& options);
+
+}  // namespace tetblend
