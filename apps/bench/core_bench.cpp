@@ -13,6 +13,7 @@
 
 #include "tetblend/core/batch_kernels.h"
 #include "tetblend/core/kaji_ochiai.h"
+#include "tetblend/core/polar.h"
 #include "tetblend/core/so3.h"
 #include "tetblend/core/sym3.h"
 
@@ -105,6 +106,15 @@ void BM_phi_eigen(benchmark::State& s) {
 void BM_psi(benchmark::State& s) {
   runKernel(s, corePool().affine, [](const Eigen::Matrix4d& a) { return psi(a); });
 }
+// psi's two pieces on the same inputs, for psi's cost against the sum of
+// theirs (issue 14 goal 3): the polar decomposition with the stretch's log
+// (one eigen-decomposition of A^T A serves both), then so(3) log of the
+// rotation (BM_so3_log, on the pool's rotations).
+void BM_psi_piece_polar_log(benchmark::State& s) {
+  runKernel(s, corePool().affine, [](const Eigen::Matrix4d& a) {
+    return polarDecomposeLog(a.topLeftCorner<3, 3>());
+  });
+}
 void BM_psi_eigen(benchmark::State& s) {
   // The diagonalisation-free reference route: S = sqrt(A^T A) and both logs
   // by MatrixFunctions.
@@ -168,6 +178,7 @@ BENCHMARK(BM_phi);
 BENCHMARK(BM_phi_batched);
 BENCHMARK(BM_phi_eigen);
 BENCHMARK(BM_psi);
+BENCHMARK(BM_psi_piece_polar_log);
 BENCHMARK(BM_psi_batched);
 BENCHMARK(BM_psi_eigen);
 
