@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "address_sanitizer.h"
 #include "cgal_meshes.h"
 #include "test_surfaces.h"
 #include "tetblend/meshing/hole_filling.h"
@@ -80,9 +81,16 @@ TEST(SurfaceSeparation, DeepOverlapIsNotSeparated) {
 TEST(SurfaceSeparation, SelfIntersectingCgalDemoMeshesAreSeparated) {
   const std::string tarball = testing_cgal::cgalDataTarball();
   if (tarball.empty()) GTEST_SKIP() << testing_cgal::kMissingCgalDemo;
-  const std::vector<std::string> names = {"bull.off",  "pig.off", "elk.off",
-                                          "camel.off", "cow.off", "ChineseDragon-10kv.off",
-                                          "diplodocus.off", "man.off", "mannequin-devil.off"};
+  // Under AddressSanitizer (about 10 times slower) only the four that part
+  // in one round; the release suite runs all nine.
+  const std::vector<std::string> names =
+      test::kAddressSanitizer
+          ? std::vector<std::string>{"bull.off", "pig.off", "elk.off", "camel.off"}
+          : std::vector<std::string>{"bull.off",       "pig.off",
+                                     "elk.off",        "camel.off",
+                                     "cow.off",        "ChineseDragon-10kv.off",
+                                     "diplodocus.off", "man.off",
+                                     "mannequin-devil.off"};
   const std::filesystem::path meshes = testing_cgal::extractCgalMeshes(tarball, names, "separate");
   ASSERT_FALSE(meshes.empty());
   for (const std::string& name : names) {
