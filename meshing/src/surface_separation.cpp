@@ -18,7 +18,7 @@ constexpr double kSmoothingStep = 0.5;
 // Inward push of an intersecting face's vertex in its first round, and the
 // factor by which it grows each round, in units of the vertex's mean edge
 // length: slight contacts part after a round or two, deeper ones after about
-// ten (0.05 · 1.3^10 ≈ 0.7 edge lengths), and the displacement bound stops
+// six (0.05 · 1.5^6 ≈ 0.6 edge lengths), and the displacement bound stops
 // the rest.
 constexpr double kFirstPush = 0.05;
 constexpr double kPushGrowth = 1.5;
@@ -101,7 +101,7 @@ std::optional<SurfaceSeparation> separateSelfIntersections(
   const std::vector<double> edgeLength = meanEdgeLengths(surface.vertices, rings);
   const double diagonal =
       (surface.vertices.colwise().maxCoeff() - surface.vertices.colwise().minCoeff()).norm();
-  const double bound = options.maxDisplacement * diagonal;
+  const double globalBound = options.maxDisplacement * diagonal;
 
   Vertices current = surface.vertices;
   std::vector<int> pushes(static_cast<std::size_t>(vertexCount), 0);  // rounds each was pushed
@@ -160,6 +160,7 @@ std::optional<SurfaceSeparation> separateSelfIntersections(
           ++pushes[v];
         }
       }
+      const double bound = std::max(globalBound, options.maxEdgeLengths * edgeLength[v]);
       if ((next.row(v) - surface.vertices.row(v)).norm() > bound) return std::nullopt;
     }
     current = std::move(next);

@@ -21,6 +21,7 @@
 namespace tetblend {
 namespace {
 
+using testing_surfaces::cube;
 using testing_surfaces::icosphere;
 using testing_surfaces::join;
 
@@ -68,6 +69,21 @@ TEST(SurfaceSeparation, SpheresThatOverlapSlightlyComeApart) {
     }
   }
   EXPECT_TRUE(validateSurface({separated->vertices, touching.triangles}, "separated").ok());
+}
+
+// Low-poly meshes part by moving vertices up to an edge, more than 5 % of
+// the diagonal: two cubes of 12 triangles touching at a corner.
+TEST(SurfaceSeparation, LowPolyContactPartsWithinAnEdge) {
+  const SurfaceMesh cubes = join(cube(), cube(Eigen::Vector3d(1.0, 1.0, 1.0)));
+  ASSERT_GT(intersectingPairs(cubes.vertices, cubes.triangles), 0u);
+  const auto separated = separateSelfIntersections(cubes);
+  ASSERT_TRUE(separated.has_value());
+  EXPECT_EQ(intersectingPairs(separated->vertices, cubes.triangles), 0u);
+  EXPECT_GT(separated->largestDisplacement,
+            SurfaceSeparationOptions{}.maxDisplacement * diagonal(cubes.vertices));
+  // Every vertex has edges of length 1 and sqrt 2 (mean above 1).
+  EXPECT_LE(separated->largestDisplacement, 1.0);
+  EXPECT_TRUE(validateSurface({separated->vertices, cubes.triangles}, "separated").ok());
 }
 
 // Centres one radius apart: no slight move separates them.

@@ -19,9 +19,15 @@ struct SurfaceSeparationOptions {
   /// CGAL demo meshes (3 to 1643 intersecting face pairs) took 1 to 45.
   int maxRounds = 60;
   /// No vertex may move further than this fraction of the bounding-box
-  /// diagonal: beyond it the surface is not "slightly" self-intersecting and
+  /// diagonal, or than maxEdgeLengths of its own mean edge length if that is
+  /// more: beyond both the surface is not "slightly" self-intersecting and
   /// the copy would no longer stand for it. Those meshes needed 0.1 to 3 %.
   double maxDisplacement = 0.05;
+  /// A low-poly surface (a game character of a few hundred vertices has
+  /// edges of 5-10 % of the diagonal) can only part by moving a vertex about
+  /// one edge: one smoothing step moves a convex corner half-way to its
+  /// neighbours' mean.
+  double maxEdgeLengths = 1.0;
 };
 
 /// The separated copy of a surface.
@@ -44,9 +50,9 @@ struct SurfaceSeparation {
 /// twice (parts overlap: inwards) or not at all (the two sides of a thin part
 /// crossed: outwards).
 /// Returns nullopt when maxRounds rounds do not separate the surface or a
-/// vertex would move beyond options.maxDisplacement of the bounding-box
-/// diagonal. Deterministic. A surface that does not intersect itself comes
-/// back unchanged after one test.
+/// vertex would move beyond both bounds of the options. Deterministic. A
+/// surface that does not intersect itself comes back unchanged after one
+/// test.
 std::optional<SurfaceSeparation> separateSelfIntersections(
     const SurfaceMesh& surface, const SurfaceSeparationOptions& options = {});
 
