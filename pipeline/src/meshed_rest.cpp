@@ -104,11 +104,11 @@ MeshedRest meshedRest(const SurfaceMesh& rest, const std::string& restName,
     throw InputError(restName + ": faces " + std::to_string(meshed.firstPair.first) + " and " +
                      std::to_string(meshed.firstPair.second) + " intersect (" +
                      std::to_string(found.pairCount) +
-                     " intersecting pairs in total), too deeply to separate by moving vertices "
-                     "by up to " +
+                     " intersecting pairs in total), too deeply to separate by moving each "
+                     "vertex by up to " +
                      formatNumber(100.0 * separation.maxDisplacement) +
-                     " % of the bounding-box diagonal: repair the surface (e.g. CGAL's "
-                     "autorefine or MeshLab) before meshing");
+                     " % of the bounding-box diagonal or its own edge length: repair the "
+                     "surface (e.g. CGAL's autorefine or MeshLab) before meshing");
   }
   meshed.separated = true;
   meshed.movedVertices = separated->movedVertices;
