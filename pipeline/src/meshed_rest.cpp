@@ -1,6 +1,7 @@
 #include "meshed_rest.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -34,6 +35,55 @@ SurfaceMesh closedSurface(const SurfaceMesh& oriented, const std::string& restNa
                      Triangles(oriented.triangles.rows() + filling.triangles.rows(), 3)};
   closed.triangles << oriented.triangles, filling.triangles;
   return closed;
+}
+
+// Two vertices at the same position, the smallest such pair of indices, or
+// (-1, -1): how a surface cut open along a texture or normal seam looks.
+std::pair<int, int> coincidentVertices(const Vertices& vertices) {
+  std::vector<int> order(static_cast<std::size_t>(vertices.rows()));
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = static_cast<int>(i);
+  const auto position = [&](int v) {
+    return std::array<double, 3>{vertices(v, 0), vertices(v, 1), vertices(v, 2)};
+  };
+  std::sort(order.begin(), order.end(), [&](int a, int b) {
+    return std::make_pair(position(a), a) < std::make_pair(position(b), b);
+  });
+  std::pair<int, int> first{-1, -1};
+  for (std::size_t i = 1; i < order.size(); ++i) {
+    if (position(order[i]) != position(order[i - 1])) continue;
+    const std::pair<int, int> pair{order[i - 1], order[i]};
+    if (first.first < 0 || pair < first) first = pair;
+  }
+  return first;
+}
+
+// An open surface with two vertices at one position: its holes are most
+// likely the two sides of a seam (texture and normal seams split vertices),
+// which no fill can close; merging the copies can.
+void refuseSeams(const SurfaceMesh& surface, const std::string& restName) {
+  if (!surface.vertices.allFinite()) return;  // validateSurface names the value
+  std::vector<std::pair<int, int>> edges;
+  edges.reserve(static_cast<std::size_t>(surface.triangles.rows()) * 3);
+  for (Eigen::Index f = 0; f < surface.triangles.rows(); ++f) {
+    for (int k = 0; k < 3; ++k) {
+      edges.push_back(std::minmax(surface.triangles(f, k), surface.triangles(f, (k + 1) % 3)));
+    }
+  }
+  std::sort(edges.begin(), edges.end());
+  bool open = false;
+  for (std::size_t i = 0; i < edges.size() && !open; ++i) {
+    const bool sameAsPrevious = i > 0 && edges[i] == edges[i - 1];
+    const bool sameAsNext = i + 1 < edges.size() && edges[i] == edges[i + 1];
+    open = !sameAsPrevious && !sameAsNext;
+  }
+  if (!open) return;
+  const auto [a, b] = coincidentVertices(surface.vertices);
+  if (a < 0) return;
+  throw InputError(restName + ": vertices " + std::to_string(a) + " and " + std::to_string(b) +
+                   " are at the same position and the surface is open, so it is cut along a "
+                   "seam (texture and normal seams split vertices) that no fill can close: "
+                   "merge coincident vertices in the rest and every example alike (e.g. "
+                   "MeshLab's Merge Close Vertices) and prepare again");
 }
 
 // A triangle filling a hole that intersects the surface: the fill is fixed by
@@ -77,6 +127,7 @@ MeshedRest meshedRest(const SurfaceMesh& rest, const std::string& restName,
   MeshedRest meshed;
   SurfaceMesh oriented = rest;
   orientWherePossible(oriented);
+  if (options.fillHoles) refuseSeams(oriented, restName);
   meshed.surface = closedSurface(oriented, restName, options, meshed.filling);
   orientWherePossible(meshed.surface);
   const Eigen::Index userFaces = rest.triangles.rows();

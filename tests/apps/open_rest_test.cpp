@@ -127,6 +127,48 @@ TEST_F(OpenRest, FillThroughTheSurfaceIsOneClearError) {
   EXPECT_NE(r.err.find("close them yourself"), std::string::npos) << r.err;
 }
 
+// A sphere cut open along its equator as a texture seam cuts it: the faces
+// of the upper half use their own copies of the equator's vertices. Both
+// holes would be filled by the same triangles; the error names the seam and
+// the remedy that works (merging the copies).
+TEST(OpenRestSeam, ASeamIsNamedWithTheMergeRemedy) {
+  const fs::path dir = scratchDir();
+  const SurfaceMesh sphere = testing_surfaces::icosphere(2);
+  SurfaceMesh seamed = sphere;
+  std::vector<int> copy(static_cast<std::size_t>(sphere.vertices.rows()), -1);
+  std::vector<Eigen::RowVector3d> added;
+  for (Eigen::Index f = 0; f < sphere.triangles.rows(); ++f) {
+    double z = 0.0;
+    for (int c = 0; c < 3; ++c) z += sphere.vertices(sphere.triangles(f, c), 2);
+    if (z <= 0.0) continue;
+    for (int c = 0; c < 3; ++c) {
+      const int v = sphere.triangles(f, c);
+      if (std::abs(sphere.vertices(v, 2)) > 1e-12) continue;  // not on the equator
+      if (copy[v] < 0) {
+        copy[v] = static_cast<int>(sphere.vertices.rows() + added.size());
+        added.push_back(sphere.vertices.row(v));
+      }
+      seamed.triangles(f, c) = copy[v];
+    }
+  }
+  ASSERT_FALSE(added.empty());
+  seamed.vertices.conservativeResize(sphere.vertices.rows() + static_cast<Eigen::Index>(added.size()), 3);
+  for (std::size_t i = 0; i < added.size(); ++i) {
+    seamed.vertices.row(sphere.vertices.rows() + static_cast<Eigen::Index>(i)) = added[i];
+  }
+  writeSurface((dir / "seamed.obj").string(), seamed);
+  const std::vector<std::string> before = listDir(dir);
+  const RunResult r = tetblend({"prepare", (dir / "seamed.obj").string(),
+                                (dir / "seamed.obj").string(), "-o", (dir / "s.tbm").string()},
+                               dir);
+  expectOneLineError(r);
+  EXPECT_NE(r.err.find("seamed.obj: vertices "), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("are at the same position and the surface is open"), std::string::npos)
+      << r.err;
+  EXPECT_NE(r.err.find("Merge Close Vertices"), std::string::npos) << r.err;
+  EXPECT_EQ(listDir(dir), before);
+}
+
 TEST_F(OpenRest, ExampleWhoseFillFoldsLosesTetsToTheExclusion) {
   // Vertex 0 of the top ring pushed across the tube's axis: the triangles
   // that close the top hole fold over each other in this example only.
