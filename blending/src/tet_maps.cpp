@@ -1,6 +1,8 @@
 #include "tetblend/blending/tet_maps.h"
 
 #include <Eigen/LU>
+#include <algorithm>
+#include <limits>
 #include <sstream>
 
 #include "tetblend/core/error.h"
@@ -8,7 +10,7 @@
 
 namespace tetblend {
 
-RestTetData restTetData(const TetMesh& rest) {
+RestTetData restTetData(const TetMesh& rest, const std::vector<int>& mayBeFlat) {
   const int tetCount = static_cast<int>(rest.tets.rows());
   const int vertexCount = static_cast<int>(rest.vertices.rows());
   RestTetData data;
@@ -26,6 +28,12 @@ RestTetData restTetData(const TetMesh& rest) {
     }
     const Eigen::Matrix3d edges = tetEdgeMatrix(rest.vertices, rest.tets.row(j));
     const double volume = edges.determinant() / 6.0;
+    const bool tolerated = std::binary_search(mayBeFlat.begin(), mayBeFlat.end(), j);
+    if (!(volume > 0.0) && tolerated) {
+      data.inverseEdges[j] = Eigen::Matrix3d::Constant(std::numeric_limits<double>::quiet_NaN());
+      data.volumes[j] = std::numeric_limits<double>::quiet_NaN();
+      continue;
+    }
     if (!(volume > 0.0)) {
       std::ostringstream message;
       message << "rest tet " << j << " has signed volume " << volume

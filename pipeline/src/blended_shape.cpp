@@ -3,11 +3,7 @@
 #include <cmath>
 #include <limits>
 
-#include <Eigen/LU>
-
 #include "tetblend/core/error.h"
-#include "tetblend/core/tet_geometry.h"
-#include "tetblend/pipeline/make_blender.h"
 #include "tetblend/pipeline/format_number.h"
 
 namespace tetblend {
@@ -43,28 +39,7 @@ std::vector<Eigen::Matrix3d> targetsOfAllTets(const ModelData& model,
 }  // namespace
 
 RestTetData modelRestData(const ModelData& model) {
-  if (model.excludedTets.empty()) return restTetData(model.rest);
-  const RestTetData stitched = restTetData(stitchedMesh(model));
-  const std::size_t count = static_cast<std::size_t>(model.rest.tets.rows());
-  RestTetData data;
-  data.inverseEdges.resize(count);
-  data.volumes.resize(count);
-  std::size_t next = 0;  // model.excludedTets is ascending
-  std::size_t kept = 0;
-  for (std::size_t t = 0; t < count; ++t) {
-    if (next < model.excludedTets.size() && model.excludedTets[next] == static_cast<int>(t)) {
-      ++next;
-      const Eigen::Matrix3d edges = tetEdgeMatrix(model.rest.vertices, model.rest.tets.row(t));
-      const double volume = edges.determinant() / 6.0;
-      const bool positive = volume > 0.0;
-      data.volumes[t] = positive ? volume : kNaN;
-      data.inverseEdges[t] = positive ? Eigen::Matrix3d(edges.inverse()) : Eigen::Matrix3d::Constant(kNaN);
-      continue;
-    }
-    data.inverseEdges[t] = stitched.inverseEdges[kept];
-    data.volumes[t] = stitched.volumes[kept++];
-  }
-  return data;
+  return restTetData(model.rest, model.excludedTets);
 }
 
 BlendResult checkedBlend(const ShapeBlender& blender, const std::vector<double>& weights,

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "blending_test_support.h"
 #include "tetblend/core/error.h"
 #include "tetblend/core/tet_geometry.h"
@@ -78,6 +80,23 @@ TEST(TetMaps, BadRestMeshIsRejected) {
   EXPECT_THROW(restTetData(rest), InputError);
   rest.tets << 0, 1, 2, 4;  // index out of range
   EXPECT_THROW(restTetData(rest), InputError);
+}
+
+// A tet listed in mayBeFlat (a model's excluded tets) is not refused when
+// inverted: it gets NaN, and the other tets keep their data.
+TEST(TetMaps, InvertedTetListedAsMayBeFlatGetsNaN) {
+  TetMesh rest;
+  rest.vertices.resize(5, 3);
+  rest.vertices << 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 1, 1, 1;
+  rest.tets.resize(2, 4);
+  rest.tets << 0, 1, 2, 3,  // positive, volume 1/6
+      1, 3, 2, 4;           // negatively oriented
+  EXPECT_THROW(restTetData(rest), InputError);
+  EXPECT_THROW(restTetData(rest, {0}), InputError);
+  const RestTetData data = restTetData(rest, {1});
+  EXPECT_EQ(data.volumes[0], 1.0 / 6.0);
+  EXPECT_TRUE(std::isnan(data.volumes[1]));
+  EXPECT_TRUE(data.inverseEdges[1].array().isNaN().all());
 }
 
 }  // namespace

@@ -16,17 +16,19 @@ namespace tetblend {
 struct RestTetData {
   /// #T inverse edge matrices D_0j^-1 (edges p1-p0, p2-p0, p3-p0 as columns).
   std::vector<Eigen::Matrix3d> inverseEdges;
-  /// #T rest volumes (positive; NaN, with a NaN inverse, only for tets a
-  /// caller leaves out, see modelRestData), in the rest mesh's length unit
-  /// cubed.
+  /// #T rest volumes (positive; NaN, with a NaN inverse, only for flat tets
+  /// a caller leaves out: restTetData's `mayBeFlat`), in the rest mesh's
+  /// length unit cubed.
   std::vector<double> volumes;
 };
 
 /// Checks that every rest tet is positively oriented and non-degenerate and
 /// returns its inverse edge matrix and volume. `rest` holds #V vertices and
-/// #T by 4 tets. Throws InputError naming the first tet with volume <= 0 or
-/// an index outside [0, #V).
-RestTetData restTetData(const TetMesh& rest);
+/// #T by 4 tets. The tets in `mayBeFlat` (ascending indices; a model's
+/// excluded tets) are not checked: where their volume is <= 0 they get a
+/// NaN volume and inverse. Throws InputError naming the first other tet with
+/// volume <= 0 or an index outside [0, #V).
+RestTetData restTetData(const TetMesh& rest, const std::vector<int>& mayBeFlat = {});
 
 /// Deformation gradients F_j = D_example,j D_rest,j^-1 (3 by 3, #T of them)
 /// of one example whose vertices (#V by 3, same order as the rest) are

@@ -44,11 +44,11 @@ BlendedShape blendShape(const ShapeBlender& blender, const ModelData& model,
                         const std::vector<double>& weights, BlendMethod method,
                         const QualityFigures& figures = {});
 
-/// restTetData(model.rest), except that an excluded tet that the rest itself
-/// leaves flat or inverted (a rest that intersects itself, embedded in tets
-/// made on a separated copy: prepare_model.h) gets a NaN volume and inverse,
-/// so its quality figures are NaN. Throws InputError naming a stitched tet
-/// that is not positively oriented (a damaged model).
+/// restTetData(model.rest, model.excludedTets): an excluded tet that the rest
+/// itself leaves flat or inverted (a rest that intersects itself, embedded in
+/// tets made on a separated copy: prepare_model.h) gets a NaN volume and
+/// inverse, so its quality figures are NaN. Throws InputError naming a
+/// stitched tet that is not positively oriented (a damaged model).
 RestTetData modelRestData(const ModelData& model);
 
 /// blendShape with the rest data of the quality given: `restData` =
