@@ -62,23 +62,16 @@ std::pair<int, int> coincidentVertices(const Vertices& vertices) {
 // which no fill can close; merging the copies can.
 void refuseSeams(const SurfaceMesh& surface, const std::string& restName) {
   if (!surface.vertices.allFinite()) return;  // validateSurface names the value
-  std::vector<std::pair<int, int>> edges;
-  edges.reserve(static_cast<std::size_t>(surface.triangles.rows()) * 3);
-  for (Eigen::Index f = 0; f < surface.triangles.rows(); ++f) {
-    for (int k = 0; k < 3; ++k) {
-      edges.push_back(std::minmax(surface.triangles(f, k), surface.triangles(f, (k + 1) % 3)));
-    }
-  }
-  std::sort(edges.begin(), edges.end());
-  bool open = false;
-  for (std::size_t i = 0; i < edges.size() && !open; ++i) {
-    const bool sameAsPrevious = i > 0 && edges[i] == edges[i - 1];
-    const bool sameAsNext = i + 1 < edges.size() && edges[i] == edges[i + 1];
-    open = !sameAsPrevious && !sameAsNext;
-  }
-  if (!open) return;
   const auto [a, b] = coincidentVertices(surface.vertices);
   if (a < 0) return;
+  SurfaceValidationOptions topology;
+  topology.checkSelfIntersections = false;
+  const SurfaceValidation checked = validateSurface(surface, restName, topology);
+  const bool open =
+      std::any_of(checked.problems.begin(), checked.problems.end(), [](const SurfaceProblem& p) {
+        return p.kind == SurfaceProblemKind::kBoundaryEdge;
+      });
+  if (!open) return;
   throw InputError(restName + ": vertices " + std::to_string(a) + " and " + std::to_string(b) +
                    " are at the same position and the surface is open, so it is cut along a "
                    "seam (texture and normal seams split vertices) that no fill can close: "
