@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <memory>
 #include <utility>
 
 #include <tbb/parallel_for.h>
@@ -107,6 +108,32 @@ std::vector<Simplex> rigidSimplicesOutside(const TetMesh& mesh, int surfaceCount
   return result;
 }
 
+// How hard to untangle an example: the whole interior if its surface is
+// clean, briefly and locally if it intersects itself (it cannot be valid).
+const UntangleEffort& effortFor(const SelfIntersections& found, const ExampleAwareOptions& options) {
+  return found.pairCount == 0 ? options.placement.untangleEffort : options.intersectingUntangle;
+}
+
+// Untangles `example` (placed on `builder`'s mesh, or extended to it by
+// splits) with `effort`, keeping the counts of its placement.
+void untangleAgain(const CompatibleTetBuilder& builder, const UntangleEffort& effort,
+                   CompatibleTetResult& example) {
+  CompatibleTetResult repaired = builder.repair(example.vertices, effort);
+  repaired.harmonicInvertedCount = example.harmonicInvertedCount;
+  repaired.arapIterations = example.arapIterations;
+  repaired.untangleRounds += example.untangleRounds;
+  example = std::move(repaired);
+}
+
+// Measures `example` again on `builder`'s mesh, keeping its counts.
+void evaluateAgain(const CompatibleTetBuilder& builder, CompatibleTetResult& example) {
+  CompatibleTetResult measured = builder.evaluate(example.vertices);
+  measured.harmonicInvertedCount = example.harmonicInvertedCount;
+  measured.arapIterations = example.arapIterations;
+  measured.untangleRounds = example.untangleRounds;
+  example = std::move(measured);
+}
+
 }  // namespace
 
 std::vector<int> invertedAllSurfaceTets(const Tets& tets, int surfaceVertexCount,
@@ -171,12 +198,7 @@ CompatibleTetMeshes buildCompatibleTetMeshes(const TetMesh& rest, int surfaceVer
   for (std::size_t k = 0; k < exampleSurfaces.size(); ++k) {
     CompatibleTetResult placed = builder.place(exampleSurfaces[k]);
     if (options.placement.untangle && !placed.invertedTets.empty()) {
-      const bool clean = meshes.selfIntersections[k].pairCount == 0;
-      CompatibleTetResult repaired = builder.repair(
-          placed.vertices, clean ? options.placement.untangleEffort : options.intersectingUntangle);
-      repaired.harmonicInvertedCount = placed.harmonicInvertedCount;
-      repaired.arapIterations = placed.arapIterations;
-      placed = std::move(repaired);
+      untangleAgain(builder, effortFor(meshes.selfIntersections[k], options), placed);
     }
     meshes.examples.push_back(std::move(placed));
     if (progress) progress("place");
@@ -191,6 +213,13 @@ CompatibleTetMeshes buildCompatibleTetMeshes(const TetMesh& rest, int surfaceVer
   // may count more before the next one counts fewer: an example's rounds stop
   // after kPatience rounds without a new best, and its best state is kept.
   // Valid placements stay valid through every split.
+  // The splits made for one example also split the other examples' inverted
+  // tets, each into more inverted tets (a self-intersecting frame's 19 grew
+  // to 6336 while the dino's clean frames were refined): an example is
+  // untangled again on the refined mesh before its own rounds, and at the
+  // end. untangledOn[k]: the tet count of the mesh example k was last
+  // untangled on (splits only add tets, so a count names one mesh).
+  std::vector<Eigen::Index> untangledOn(exampleSurfaces.size(), meshes.rest.tets.rows());
   std::vector<std::size_t> order;
   for (std::size_t k = 0; k < exampleSurfaces.size(); ++k) {
     if (meshes.selfIntersections[k].pairCount == 0 && !meshes.examples[k].invertedTets.empty()) {
@@ -202,6 +231,11 @@ CompatibleTetMeshes buildCompatibleTetMeshes(const TetMesh& rest, int surfaceVer
   });
   if (!options.placement.untangle) order.clear();
   for (std::size_t k : order) {
+    if (untangledOn[k] != meshes.rest.tets.rows()) {
+      const CompatibleTetBuilder current(meshes.rest, surfaceVertexCount, placement);
+      untangleAgain(current, options.placement.untangleEffort, meshes.examples[k]);
+      untangledOn[k] = meshes.rest.tets.rows();
+    }
     int rounds = 0;
     std::size_t best = meshes.examples[k].invertedTets.size();
     CompatibleTetMeshes bestMeshes;
@@ -215,15 +249,13 @@ CompatibleTetMeshes buildCompatibleTetMeshes(const TetMesh& rest, int surfaceVer
       ++rounds;
       const CompatibleTetBuilder refined(meshes.rest, surfaceVertexCount, placement);
       for (std::size_t j = 0; j < exampleSurfaces.size(); ++j) {
-        CompatibleTetResult& example = meshes.examples[j];
-        CompatibleTetResult updated =
-            j == k ? refined.repair(example.vertices, options.placement.untangleEffort)
-                   : refined.evaluate(example.vertices);
-        updated.harmonicInvertedCount = example.harmonicInvertedCount;
-        updated.arapIterations = example.arapIterations;
-        updated.untangleRounds += example.untangleRounds;
-        example = std::move(updated);
+        if (j == k) {
+          untangleAgain(refined, options.placement.untangleEffort, meshes.examples[j]);
+        } else {
+          evaluateAgain(refined, meshes.examples[j]);
+        }
       }
+      untangledOn[k] = meshes.rest.tets.rows();
       if (progress) progress("refine");
       const std::size_t count = meshes.examples[k].invertedTets.size();
       if (count < best) {
@@ -233,7 +265,21 @@ CompatibleTetMeshes buildCompatibleTetMeshes(const TetMesh& rest, int surfaceVer
         ++sinceBest;
       }
     }
-    if (sinceBest > 0) meshes = std::move(bestMeshes);
+    if (sinceBest > 0) {
+      meshes = std::move(bestMeshes);
+      untangledOn[k] = meshes.rest.tets.rows();  // its best state was untangled there
+    }
+  }
+  std::unique_ptr<CompatibleTetBuilder> refined;
+  for (std::size_t k = 0; k < exampleSurfaces.size(); ++k) {
+    if (meshes.examples[k].invertedTets.empty() || !options.placement.untangle ||
+        untangledOn[k] == meshes.rest.tets.rows()) {
+      continue;
+    }
+    if (!refined) {
+      refined = std::make_unique<CompatibleTetBuilder>(meshes.rest, surfaceVertexCount, placement);
+    }
+    untangleAgain(*refined, effortFor(meshes.selfIntersections[k], options), meshes.examples[k]);
   }
   return meshes;
 }

@@ -30,7 +30,10 @@
 //     placement stays valid: each child tet has a positive fraction of its
 //     parent's volume) and only the still-inverted regions are untangled
 //     again (no new factorisation). Rounds stop early when the inverted
-//     count grows.
+//     count grows. A split also splits the inverted tets of the other
+//     examples there into more inverted tets: an example is untangled again
+//     on the refined mesh before its own rounds, and every example with
+//     inverted tets once more at the end.
 // Examples whose surface intersects itself cannot be embedded where it does;
 // they are untangled only locally and briefly (intersectingUntangle) so they
 // fail fast, and they do not drive refinement.
