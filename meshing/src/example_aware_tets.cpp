@@ -217,9 +217,16 @@ CompatibleTetMeshes buildCompatibleTetMeshes(const TetMesh& rest, int surfaceVer
   // tets, each into more inverted tets (a self-intersecting frame's 19 grew
   // to 6336 while the dino's clean frames were refined): an example is
   // untangled again on the refined mesh before its own rounds, and at the
-  // end. untangledOn[k]: the tet count of the mesh example k was last
-  // untangled on (splits only add tets, so a count names one mesh).
-  std::vector<Eigen::Index> untangledOn(exampleSurfaces.size(), meshes.rest.tets.rows());
+  // end, when it has more inverted tets than after its last untangling
+  // (untangledCount; a split never lowers the count, so more means its
+  // inverted tets were split).
+  std::vector<std::size_t> untangledCount;
+  for (const CompatibleTetResult& example : meshes.examples) {
+    untangledCount.push_back(example.invertedTets.size());
+  }
+  auto splitSinceUntangled = [&](std::size_t k) {
+    return meshes.examples[k].invertedTets.size() > untangledCount[k];
+  };
   std::vector<std::size_t> order;
   for (std::size_t k = 0; k < exampleSurfaces.size(); ++k) {
     if (meshes.selfIntersections[k].pairCount == 0 && !meshes.examples[k].invertedTets.empty()) {
@@ -231,10 +238,10 @@ CompatibleTetMeshes buildCompatibleTetMeshes(const TetMesh& rest, int surfaceVer
   });
   if (!options.placement.untangle) order.clear();
   for (std::size_t k : order) {
-    if (untangledOn[k] != meshes.rest.tets.rows()) {
+    if (splitSinceUntangled(k)) {
       const CompatibleTetBuilder current(meshes.rest, surfaceVertexCount, placement);
       untangleAgain(current, options.placement.untangleEffort, meshes.examples[k]);
-      untangledOn[k] = meshes.rest.tets.rows();
+      untangledCount[k] = meshes.examples[k].invertedTets.size();
     }
     int rounds = 0;
     std::size_t best = meshes.examples[k].invertedTets.size();
@@ -255,7 +262,7 @@ CompatibleTetMeshes buildCompatibleTetMeshes(const TetMesh& rest, int surfaceVer
           evaluateAgain(refined, meshes.examples[j]);
         }
       }
-      untangledOn[k] = meshes.rest.tets.rows();
+      untangledCount[k] = meshes.examples[k].invertedTets.size();
       if (progress) progress("refine");
       const std::size_t count = meshes.examples[k].invertedTets.size();
       if (count < best) {
@@ -267,13 +274,13 @@ CompatibleTetMeshes buildCompatibleTetMeshes(const TetMesh& rest, int surfaceVer
     }
     if (sinceBest > 0) {
       meshes = std::move(bestMeshes);
-      untangledOn[k] = meshes.rest.tets.rows();  // its best state was untangled there
+      untangledCount[k] = meshes.examples[k].invertedTets.size();  // untangled there
     }
   }
   std::unique_ptr<CompatibleTetBuilder> refined;
   for (std::size_t k = 0; k < exampleSurfaces.size(); ++k) {
     if (meshes.examples[k].invertedTets.empty() || !options.placement.untangle ||
-        untangledOn[k] == meshes.rest.tets.rows()) {
+        !splitSinceUntangled(k)) {
       continue;
     }
     if (!refined) {
