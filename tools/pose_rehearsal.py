@@ -14,7 +14,9 @@ intersects itself.
 Only the Python standard library is needed. Usage:
   tools/pose_rehearsal.py TETBLEND OUT_DIR MESH.off [MESH.off ...]
       [--frames 16] [--handles 6] [--amplitude 60] [--falloff 4]
-      [--method dqs] [--seed 1]
+      [--method dqs] [--seed 1] [--rest-frame N]
+With --rest-frame N, frame N is the rest and the other frames are the
+examples (a posed rest, as when a user picks an animation's first frame).
 """
 import argparse
 import json
@@ -110,8 +112,11 @@ def rehearse(args, mesh):
     folder = os.path.join(args.out_dir, name)
     os.makedirs(folder, exist_ok=True)
     frames = write_frames(args, mesh, folder)
+    rest = mesh
+    if args.rest_frame is not None:
+        rest = frames.pop(args.rest_frame)
     start = time.monotonic()
-    run = subprocess.run([args.tetblend, "prepare", mesh, *frames, "-o",
+    run = subprocess.run([args.tetblend, "prepare", rest, *frames, "-o",
                           os.path.join(folder, "model.tbm")], capture_output=True, text=True)
     seconds = time.monotonic() - start
     lines = run.stderr.splitlines() + run.stdout.splitlines()
@@ -138,9 +143,15 @@ def main():
     parser.add_argument("--falloff", type=float, default=4.0)
     parser.add_argument("--method", default="dqs")
     parser.add_argument("--seed", type=int, default=1)
+    parser.add_argument("--rest-frame", type=int, default=None,
+                        help="use this frame (0-based) as the rest and the others as examples "
+                             "(default: the mesh itself is the rest)")
     args = parser.parse_args()
+    if args.rest_frame is not None and not 0 <= args.rest_frame < args.frames:
+        parser.error(f"--rest-frame must be in [0, {args.frames - 1}]")
+    rest = "the mesh" if args.rest_frame is None else f"frame {args.rest_frame}"
     print(f"{args.frames} frames, {args.handles} handles, {args.amplitude:g} degrees, "
-          f"{args.method}, falloff {args.falloff:g}, seed {args.seed}")
+          f"{args.method}, falloff {args.falloff:g}, seed {args.seed}, rest: {rest}")
     print("| mesh | tets | Steiner points | excluded tets | frames self-intersecting "
           "with excluded tets | clean frames with excluded tets | prepare s |")
     print("|---|---|---|---|---|---|---|")

@@ -152,7 +152,9 @@ MeshedRest meshedRest(const SurfaceMesh& rest, const std::string& restName,
                      "vertex by up to " +
                      formatNumber(100.0 * separation.maxDisplacement) +
                      " % of the bounding-box diagonal or its own edge length: repair the "
-                     "surface (e.g. CGAL's autorefine or MeshLab) before meshing");
+                     "surface (e.g. CGAL's autorefine or MeshLab) before meshing, or choose "
+                     "as the rest a pose whose surface does not intersect itself (examples "
+                     "may)");
   }
   meshed.separated = true;
   meshed.movedVertices = separated->movedVertices;
