@@ -15,6 +15,8 @@
 // not inline the Eigen and helper functions, compiled for that -march, into
 // the x86-64-v4 clone (their targets differ), and the block loops called them
 // per lane (sym_exp and sym_log ran 23 % slower than in the default build).
+// That version is compiled for the x86-64 level the -march covers
+// (cmake/TetblendBatchLevel.cmake), the code of the default build's clone.
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && \
     !defined(TETBLEND_BATCH_SINGLE_TARGET) && !defined(__AVX2__)
 #define TETBLEND_BATCH_CLONES \
