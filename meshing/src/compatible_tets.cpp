@@ -18,6 +18,7 @@
 #endif
 
 #include <tbb/blocked_range.h>
+#include <tbb/collaborative_call_once.h>
 #include <tbb/parallel_for.h>
 
 #include "interior_stiffness.h"
@@ -91,15 +92,19 @@ struct CompatibleTetBuilder::Impl {
   // K_II is factored once per rest mesh: CHOLMOD's supernodal LL^T when
   // tetblend is built with CHOLMOD (BLAS-3 on the dense supernodes, many times
   // faster than the simplicial factor at 10^5-10^6 tets), else Eigen's
-  // SimplicialLDLT. Solves are sequential (Eigen's CHOLMOD wrapper keeps one
-  // cholmod_common).
+  // SimplicialLDLT. Solves take turns (solveMutex: Eigen's CHOLMOD wrapper
+  // keeps one cholmod_common), so examples may be placed on several threads.
 #ifdef TETBLEND_HAVE_CHOLMOD
   Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower> solver;
 #else
   Eigen::SimplicialLDLT<SparseMatrix> solver;
 #endif
-  std::once_flag factorOnce;
-  std::once_flag trianglesOnce;
+  mutable std::mutex solveMutex;
+  // Collaborative: a thread that waits for the first use joins its parallel
+  // loops (a std::call_once whose body runs TBB loops can deadlock when the
+  // waiting thread stole the caller's outer task).
+  tbb::collaborative_once_flag factorOnce;
+  tbb::collaborative_once_flag trianglesOnce;
   Triangles surfaceTriangles;  // boundary faces, on first use by propagatedRotations
   double diagonal = 0.0;
   double totalVolume = 0.0;  // Σ_t vol_t
@@ -107,7 +112,7 @@ struct CompatibleTetBuilder::Impl {
 
   // Assembles K_II and K_IB and factors K_II, once, on first use.
   void requireFactor() {
-    std::call_once(factorOnce, [this] {
+    tbb::collaborative_call_once(factorOnce, [this] {
       StiffnessBlocks blocks = assembleStiffnessBlocks(rest.tets, elements, stars, surfaceCount);
       couplingBlock = std::move(blocks.coupling);
       if (interiorCount > 0) {
@@ -194,7 +199,9 @@ struct CompatibleTetBuilder::Impl {
 
   // Interior positions X_I = K_II^{-1} (rhs - K_IB X_B), all as #rows by k.
   Eigen::MatrixXd solveInterior(const Eigen::MatrixXd& rhs, const Eigen::MatrixXd& boundary) const {
-    return solver.solve(rhs - couplingBlock * boundary);
+    const Eigen::MatrixXd shifted = rhs - couplingBlock * boundary;
+    const std::lock_guard<std::mutex> lock(solveMutex);
+    return solver.solve(shifted);
   }
 
   // Σ_t vol_t R_t g_a over the tets, restricted to interior vertices a (the
@@ -256,7 +263,8 @@ struct CompatibleTetBuilder::Impl {
   // factorisation, 9 right-hand sides), averaged over each tet's corners and
   // projected back to SO(3).
   RotationField propagatedRotations(const Vertices& example) {
-    std::call_once(trianglesOnce, [this] { surfaceTriangles = boundarySurface(rest).triangles; });
+    tbb::collaborative_call_once(trianglesOnce,
+                                 [this] { surfaceTriangles = boundarySurface(rest).triangles; });
     Eigen::MatrixXd boundary = Eigen::MatrixXd::Zero(surfaceCount, 9);
     for (Eigen::Index f = 0; f < surfaceTriangles.rows(); ++f) {
       auto frame = [&](const Vertices& positions) {

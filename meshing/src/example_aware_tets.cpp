@@ -3,9 +3,13 @@
 #include <algorithm>
 #include <cstddef>
 #include <memory>
+#include <mutex>
 #include <utility>
 
+#include <tbb/global_control.h>
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_pipeline.h>
+#include <tbb/task_arena.h>
 
 #include "surface_interior.h"
 #include "tet_stellar_split.h"
@@ -20,6 +24,50 @@ namespace {
 // Stage 3 rounds in a row without fewer inverted tets of an example before
 // its refinement gives up.
 constexpr int kPatience = 2;
+
+// Working memory of one example's placement per rest tet, an upper bound:
+// a clean example that frees the whole interior holds the Newton untangler's
+// per-tet Hessians (1.2 kB) and its factor. Measured, a second placement at
+// once added 100 MB to the peak at 54 k tets (the bear's 48 frames), 12 MB at
+// 15 k (the dino's) and nothing measurable at 1 M (bench_meshing's hard set).
+constexpr double kPlacementBytesPerTet = 2000.0;
+// The most the examples placed at once may use together.
+constexpr double kConcurrentPlacementBytes = 2e9;
+
+// How many examples are placed at once: one per thread while their working
+// memory stays within kConcurrentPlacementBytes, at least one. A placement's
+// own loops are parallel too, but its sparse factorisations and sequential
+// steps are not: the bear's 48 frames took 63.6 s instead of 87.2 s on 2
+// cores, with the same model bit for bit.
+std::size_t concurrentExamples(Eigen::Index tets, std::size_t examples) {
+  const double byMemory =
+      kConcurrentPlacementBytes /
+      (kPlacementBytesPerTet * static_cast<double>(std::max<Eigen::Index>(tets, 1)));
+  const std::size_t threads =
+      std::min(static_cast<std::size_t>(tbb::this_task_arena::max_concurrency()),
+               tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism));
+  return std::max<std::size_t>(1,
+                               std::min({examples, threads, static_cast<std::size_t>(byMemory)}));
+}
+
+// Runs body(k) for k = 0..count-1, at most `concurrency` at a time (in
+// order on this thread when 1). Each body writes only its own example's
+// slots, so the results do not depend on the order.
+template <class Body>
+void forEachExample(std::size_t count, std::size_t concurrency, const Body& body) {
+  if (concurrency <= 1) {
+    for (std::size_t k = 0; k < count; ++k) body(k);
+    return;
+  }
+  std::size_t next = 0;
+  tbb::parallel_pipeline(concurrency,
+                         tbb::make_filter<void, std::size_t>(tbb::filter_mode::serial_in_order,
+                                                             [&](tbb::flow_control& control) {
+                                                               if (next == count) control.stop();
+                                                               return next++;
+                                                             }) &
+                             tbb::make_filter<std::size_t, void>(tbb::filter_mode::parallel, body));
+}
 
 void sortUnique(std::vector<int>& values) {
   std::sort(values.begin(), values.end());
@@ -110,7 +158,8 @@ std::vector<Simplex> rigidSimplicesOutside(const TetMesh& mesh, int surfaceCount
 
 // How hard to untangle an example: the whole interior if its surface is
 // clean, briefly and locally if it intersects itself (it cannot be valid).
-const UntangleEffort& effortFor(const SelfIntersections& found, const ExampleAwareOptions& options) {
+const UntangleEffort& effortFor(const SelfIntersections& found,
+                                const ExampleAwareOptions& options) {
   return found.pairCount == 0 ? options.placement.untangleEffort : options.intersectingUntangle;
 }
 
@@ -157,6 +206,12 @@ CompatibleTetMeshes buildCompatibleTetMeshes(const TetMesh& rest, int surfaceVer
                        std::to_string(surfaceVertexCount) + ", all finite)");
     }
   }
+  std::mutex progressMutex;  // examples may be placed on several threads
+  auto report = [&](const char* stage) {
+    if (!progress) return;
+    const std::lock_guard<std::mutex> lock(progressMutex);
+    progress(stage);
+  };
   CompatibleTetMeshes meshes;
   meshes.rest = rest;
   const BoundarySimplices boundary = boundarySimplices(rest);
@@ -173,7 +228,7 @@ CompatibleTetMeshes buildCompatibleTetMeshes(const TetMesh& rest, int surfaceVer
   if (!outside.empty() && options.maxRounds > 0) {
     meshes.rigidSimplicesOutside = static_cast<int>(outside.size());
     split(outside, meshes);
-    if (progress) progress("refine");
+    report("refine");
   }
   for (int round = 0; round < options.maxRounds; ++round) {
     std::vector<int> bad;
@@ -188,21 +243,24 @@ CompatibleTetMeshes buildCompatibleTetMeshes(const TetMesh& rest, int surfaceVer
     if (simplices.empty()) break;
     meshes.allSurfaceTetsInverted += static_cast<int>(bad.size());
     split(simplices, meshes);
-    if (progress) progress("refine");
+    report("refine");
   }
 
-  // Stage 2: place every example.
+  // Stage 2: place every example, several at once (concurrentExamples).
   CompatibleTetOptions placement = options.placement;
   placement.untangle = false;
   const CompatibleTetBuilder builder(meshes.rest, surfaceVertexCount, placement);
-  for (std::size_t k = 0; k < exampleSurfaces.size(); ++k) {
-    CompatibleTetResult placed = builder.place(exampleSurfaces[k]);
-    if (options.placement.untangle && !placed.invertedTets.empty()) {
-      untangleAgain(builder, effortFor(meshes.selfIntersections[k], options), placed);
-    }
-    meshes.examples.push_back(std::move(placed));
-    if (progress) progress("place");
-  }
+  const std::size_t exampleCount = exampleSurfaces.size();
+  meshes.examples.resize(exampleCount);
+  forEachExample(
+      exampleCount, concurrentExamples(meshes.rest.tets.rows(), exampleCount), [&](std::size_t k) {
+        CompatibleTetResult placed = builder.place(exampleSurfaces[k]);
+        if (options.placement.untangle && !placed.invertedTets.empty()) {
+          untangleAgain(builder, effortFor(meshes.selfIntersections[k], options), placed);
+        }
+        meshes.examples[k] = std::move(placed);
+        report("place");
+      });
 
   // Stage 3: refine where clean examples stay inverted, untangle again, one
   // example at a time, the one with the fewest inverted tets first (a hopeless
@@ -268,7 +326,7 @@ CompatibleTetMeshes buildCompatibleTetMeshes(const TetMesh& rest, int surfaceVer
       untangleAgain(refined, options.placement.untangleEffort, meshes.examples[k]);
       untangledCount[k] = meshes.examples[k].invertedTets.size();
       measuredOn[k] = meshes.rest.tets.rows();
-      if (progress) progress("refine");
+      report("refine");
       const std::size_t count = meshes.examples[k].invertedTets.size();
       if (count < best) {
         best = count;
@@ -283,18 +341,22 @@ CompatibleTetMeshes buildCompatibleTetMeshes(const TetMesh& rest, int surfaceVer
       measuredOn[k] = meshes.rest.tets.rows();
     }
   }
-  std::unique_ptr<CompatibleTetBuilder> refined;
-  for (std::size_t k = 0; k < exampleSurfaces.size(); ++k) {
-    if (measuredOn[k] == meshes.rest.tets.rows()) continue;
-    if (!refined) {
-      refined = std::make_unique<CompatibleTetBuilder>(meshes.rest, surfaceVertexCount, placement);
-    }
-    evaluateAgain(*refined, meshes.examples[k]);
-    if (!meshes.examples[k].invertedTets.empty() && options.placement.untangle &&
-        splitSinceUntangled(k)) {
-      untangleAgain(*refined, effortFor(meshes.selfIntersections[k], options), meshes.examples[k]);
-    }
+  std::vector<std::size_t> stale;  // examples not yet measured on the final mesh
+  for (std::size_t k = 0; k < exampleCount; ++k) {
+    if (measuredOn[k] != meshes.rest.tets.rows()) stale.push_back(k);
   }
+  if (stale.empty()) return meshes;
+  const CompatibleTetBuilder refined(meshes.rest, surfaceVertexCount, placement);
+  forEachExample(stale.size(), concurrentExamples(meshes.rest.tets.rows(), stale.size()),
+                 [&](std::size_t i) {
+                   const std::size_t k = stale[i];
+                   evaluateAgain(refined, meshes.examples[k]);
+                   if (!meshes.examples[k].invertedTets.empty() && options.placement.untangle &&
+                       splitSinceUntangled(k)) {
+                     untangleAgain(refined, effortFor(meshes.selfIntersections[k], options),
+                                   meshes.examples[k]);
+                   }
+                 });
   return meshes;
 }
 

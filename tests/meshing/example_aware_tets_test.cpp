@@ -5,6 +5,7 @@
 #include "tetblend/meshing/example_aware_tets.h"
 
 #include <gtest/gtest.h>
+#include <tbb/global_control.h>
 
 #include <algorithm>
 #include <array>
@@ -12,6 +13,7 @@
 
 #include "tetblend/core/constants.h"
 #include "tetblend/core/tet_geometry.h"
+#include "tetblend/meshing/pose_corpus.h"
 #include "tetblend/meshing/procedural_shapes.h"
 #include "tetblend/meshing/self_intersection.h"
 #include "tetblend/meshing/surface_validation.h"
@@ -125,6 +127,36 @@ TEST(ExampleAwareTets, NoRoundsMeansPlacementOnly) {
       buildCompatibleTetMeshes(bar.rest, surfaceCount, {bar.twisted}, options);
   EXPECT_EQ(built.steinerPoints, 0);
   EXPECT_FALSE(built.examples[0].invertedTets.empty());
+}
+
+// Examples are placed several at once when there are threads for it; the
+// result must be the one-at-a-time result bit for bit (each placement is
+// deterministic and writes only its own example). The bar's nine hard poses:
+// clean ones that need ARAP, untangling and stage-3 refinement, and ones
+// whose surface intersects itself (bend180, dqsBend170, noisyTwist360).
+TEST(ExampleAwareTets, ExamplesPlacedAtOnceGiveTheOneAtATimeResult) {
+  const AllSurfaceBar bar = allSurfaceBar();
+  const int surfaceCount = static_cast<int>(bar.surface.vertices.rows());
+  std::vector<Vertices> poses;
+  for (const NamedPose& pose : hardPoses(bar.surface.vertices, bar.surface.triangles)) {
+    poses.push_back(pose.vertices);
+  }
+  const CompatibleTetMeshes atOnce = buildCompatibleTetMeshes(bar.rest, surfaceCount, poses);
+  CompatibleTetMeshes oneAtATime;
+  {
+    const tbb::global_control oneThread(tbb::global_control::max_allowed_parallelism, 1);
+    oneAtATime = buildCompatibleTetMeshes(bar.rest, surfaceCount, poses);
+  }
+  EXPECT_GT(atOnce.steinerPoints, 0);
+  EXPECT_TRUE(atOnce.rest.tets == oneAtATime.rest.tets);
+  EXPECT_TRUE(atOnce.rest.vertices == oneAtATime.rest.vertices);
+  ASSERT_EQ(atOnce.examples.size(), poses.size());
+  ASSERT_EQ(oneAtATime.examples.size(), poses.size());
+  for (std::size_t k = 0; k < poses.size(); ++k) {
+    EXPECT_TRUE(atOnce.examples[k].vertices == oneAtATime.examples[k].vertices) << "example " << k;
+    EXPECT_EQ(atOnce.examples[k].invertedTets, oneAtATime.examples[k].invertedTets)
+        << "example " << k;
+  }
 }
 
 }  // namespace
