@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "formats.h"
+#include "polygon_fan.h"
 #include "text_parsing.h"
 
 namespace tetblend::detail {
@@ -16,32 +17,31 @@ SurfaceMesh readObj(const std::string& path) {
   TextLines lines(text);
   std::vector<Eigen::RowVector3d> positions;
   struct Face {
-    long long corner[3];
+    std::size_t firstCorner;  // into `corners`
     std::size_t line;
     std::size_t verticesBefore;
   };
   std::vector<Face> faces;
+  std::vector<long long> corners;  // as written: 1-based or relative
   while (lines.next()) {
     const auto& tokens = lines.tokens();
     if (tokens[0] == "v") {
       positions.push_back(
           parseVertex(tokens, 1, path, lines.lineNumber(), static_cast<int>(positions.size())));
     } else if (tokens[0] == "f") {
-      const std::size_t corners = tokens.size() - 1;
-      if (corners != 3) {
+      const std::size_t count = tokens.size() - 1;
+      if (count < 3) {
         throwAtLine(path, lines.lineNumber(),
                     "face " + std::to_string(faces.size()) + " (0-based) has " +
-                        std::to_string(corners) +
-                        " vertices: " + (corners > 3 ? "triangulate it first" : "a face needs 3"));
+                        std::to_string(count) + " vertices: a face needs 3");
       }
-      Face face{{0, 0, 0}, lines.lineNumber(), positions.size()};
-      for (int c = 0; c < 3; ++c) {
+      faces.push_back(Face{corners.size(), lines.lineNumber(), positions.size()});
+      for (std::size_t c = 0; c < count; ++c) {
         const std::string_view corner = tokens[1 + c];
-        face.corner[c] =
-            parseInteger(corner.substr(0, corner.find('/')), path, lines.lineNumber(),
-                         [&] { return "vertex index of face " + std::to_string(faces.size()); });
+        corners.push_back(parseInteger(
+            corner.substr(0, corner.find('/')), path, lines.lineNumber(),
+            [&] { return "vertex index of face " + std::to_string(faces.size() - 1); }));
       }
-      faces.push_back(face);
     }
   }
   SurfaceMesh mesh;
@@ -50,11 +50,12 @@ SurfaceMesh readObj(const std::string& path) {
     mesh.vertices.row(static_cast<Eigen::Index>(v)) = positions[v];
   }
   const int count = static_cast<int>(positions.size());
-  mesh.triangles.resize(static_cast<Eigen::Index>(faces.size()), 3);
+  PolygonFaces polygons;
   for (std::size_t f = 0; f < faces.size(); ++f) {
     const auto element = [f] { return "face " + std::to_string(f) + " (0-based)"; };
-    for (int c = 0; c < 3; ++c) {
-      long long index = faces[f].corner[c];
+    const std::size_t end = f + 1 < faces.size() ? faces[f + 1].firstCorner : corners.size();
+    for (std::size_t c = faces[f].firstCorner; c < end; ++c) {
+      long long index = corners[c];
       if (index < 0) {
         // Relative index: -1 is the last vertex defined before this face.
         const long long resolved = static_cast<long long>(faces[f].verticesBefore) + index + 1;
@@ -66,10 +67,11 @@ SurfaceMesh readObj(const std::string& path) {
         }
         index = resolved;
       }
-      mesh.triangles(static_cast<Eigen::Index>(f), c) =
-          checkedIndex(index, 1, count, path, faces[f].line, element);
+      polygons.corners.push_back(checkedIndex(index, 1, count, path, faces[f].line, element));
     }
+    polygons.closeFace();
   }
+  mesh.triangles = fanTriangles(polygons);
   return mesh;
 }
 

@@ -1,12 +1,14 @@
 // Geomview OFF: a header keyword (OFF, COFF, NOFF, CNOFF, STOFF, ...; the
 // counts may follow on the same line), "#V #F #E", #V vertex lines (extra
 // values such as colours or normals are ignored) and #F face lines
-// "k i0 .. ik-1 [colour]" with 0-based indices. Only k == 3 is accepted.
+// "k i0 .. ik-1 [colour]" with 0-based indices, k >= 3 (polygons are split
+// into triangles, polygon_fan.h).
 
 #include <algorithm>
 #include <string>
 
 #include "formats.h"
+#include "polygon_fan.h"
 #include "text_parsing.h"
 
 namespace tetblend::detail {
@@ -38,9 +40,8 @@ SurfaceMesh readOff(const std::string& path) {
   const int vertexCount = parseCount(counts[0], path, countLine, "vertex count");
   const int faceCount = parseCount(counts[1], path, countLine, "face count");
   // Allocations are bounded by the data: in text each value takes at least one
-  // byte, and a vertex line has 3 values, a face line 4 ("3 i j k").
+  // byte, and a vertex line has 3 values. Faces grow as their lines are read.
   constexpr std::size_t kMinVertexBytes = 3;
-  constexpr std::size_t kMinFaceBytes = 4;
   const std::size_t available = text.size() - std::min(text.size(), lines.endOffset());
 
   SurfaceMesh mesh;
@@ -54,34 +55,36 @@ SurfaceMesh readOff(const std::string& path) {
     growRows(mesh.vertices, v, vertexCount);
     mesh.vertices.row(v) = parseVertex(lines.tokens(), 0, path, lines.lineNumber(), v);
   }
-  mesh.triangles.resize(rowsToAllocate(faceCount, kMinFaceBytes, available), 3);
+  PolygonFaces polygons;  // grows with the face lines actually read
   for (int f = 0; f < faceCount; ++f) {
     if (!lines.next()) {
       throwAtLine(path, lines.lineNumber(),
                   "file ends after " + std::to_string(f) + " of " + std::to_string(faceCount) +
                       " faces: fix the header or the data");
     }
-    growRows(mesh.triangles, f, faceCount);
     const auto& tokens = lines.tokens();
     const auto element = [f] { return "face " + std::to_string(f) + " (0-based)"; };
     const long long corners = parseInteger(tokens[0], path, lines.lineNumber(),
                                            [&] { return "vertex count of " + element(); });
-    if (corners != 3) {
+    if (corners < 3) {
       throwAtLine(path, lines.lineNumber(),
-                  element() + " has " + std::to_string(corners) +
-                      " vertices: " + (corners > 3 ? "triangulate it first" : "a face needs 3"));
+                  element() + " has " + std::to_string(corners) + " vertices: a face needs 3");
     }
-    if (tokens.size() < 4) {
-      throwAtLine(
-          path, lines.lineNumber(),
-          element() + ": expected 3 vertex indices, found " + std::to_string(tokens.size() - 1));
+    if (static_cast<long long>(tokens.size()) - 1 < corners) {
+      throwAtLine(path, lines.lineNumber(),
+                  element() + ": expected " + std::to_string(corners) + " vertex indices, found " +
+                      std::to_string(tokens.size() - 1));
     }
-    for (int c = 0; c < 3; ++c) {
-      const long long index = parseInteger(tokens[1 + c], path, lines.lineNumber(),
-                                           [&] { return "vertex index of " + element(); });
-      mesh.triangles(f, c) = checkedIndex(index, 0, vertexCount, path, lines.lineNumber(), element);
+    for (long long c = 0; c < corners; ++c) {
+      const long long index =
+          parseInteger(tokens[static_cast<std::size_t>(1 + c)], path, lines.lineNumber(),
+                       [&] { return "vertex index of " + element(); });
+      polygons.corners.push_back(
+          checkedIndex(index, 0, vertexCount, path, lines.lineNumber(), element));
     }
+    polygons.closeFace();
   }
+  mesh.triangles = fanTriangles(polygons);
   return mesh;
 }
 

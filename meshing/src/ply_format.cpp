@@ -1,7 +1,8 @@
 // Stanford PLY: ascii, binary_little_endian and binary_big_endian. The
 // "vertex" element must have x, y, z properties (any numeric type; others are
 // ignored); the "face" element must have a list property "vertex_indices" (or
-// "vertex_index") whose lists all have 3 entries. Other elements are skipped.
+// "vertex_index") whose lists have 3 or more entries (polygons are split into
+// triangles, polygon_fan.h). Other elements are skipped.
 // Errors in binary data name the byte offset instead of a line.
 
 #include <algorithm>
@@ -12,6 +13,7 @@
 #include <vector>
 
 #include "formats.h"
+#include "polygon_fan.h"
 #include "tetblend/core/error.h"
 #include "text_parsing.h"
 
@@ -298,7 +300,7 @@ SurfaceMesh readPly(const std::string& path) {
 
   SurfaceMesh mesh;
   mesh.vertices.resize(0, 3);
-  mesh.triangles.resize(0, 3);
+  PolygonFaces polygons;  // grows with the lists actually read
   ValueSource source(path, text, lines, encoding);
   for (const Element& e : elements) {
     // Rows without properties hold no bytes (binary) or no tokens (ascii):
@@ -308,10 +310,17 @@ SurfaceMesh readPly(const std::string& path) {
     const bool isFace = e.name == "face";
     const Eigen::Index rows = rowsToAllocate(e.count, minimumRowBytes(e, encoding), available);
     if (isVertex) mesh.vertices.resize(rows, 3);
-    if (isFace) mesh.triangles.resize(rows, 3);
     std::vector<int> axes;
     for (const Property& p : e.properties) {
       axes.push_back(p.name == "x" ? 0 : p.name == "y" ? 1 : p.name == "z" ? 2 : -1);
+    }
+    // The face's corners: its first index list (checkElements: it has one).
+    std::size_t cornerList = e.properties.size();
+    for (std::size_t k = 0; k < e.properties.size() && isFace; ++k) {
+      if (isIndexList(e.properties[k])) {
+        cornerList = k;
+        break;
+      }
     }
     for (int i = 0; i < e.count; ++i) {
       const auto element = [&e, i] {
@@ -319,7 +328,6 @@ SurfaceMesh readPly(const std::string& path) {
       };
       source.beginRow(element);
       if (isVertex) growRows(mesh.vertices, i, e.count);
-      if (isFace) growRows(mesh.triangles, i, e.count);
       const std::size_t rowPosition = source.position();
       const auto where = [&] { return source.where(rowPosition); };
       for (std::size_t k = 0; k < e.properties.size(); ++k) {
@@ -345,12 +353,11 @@ SurfaceMesh readPly(const std::string& path) {
                            " is not a whole number of entries: fix the file");
         }
         if (corners < 0) throw InputError(path + ":" + where() + ": negative list length");
-        const bool indices = isFace && isIndexList(p);
-        if (indices && corners != 3) {
-          throw InputError(
-              path + ":" + where() + ": face " + std::to_string(i) + " (0-based) has " +
-              std::to_string(static_cast<long long>(corners)) +
-              " vertices: " + (corners > 3 ? "triangulate it first" : "a face needs 3"));
+        const bool indices = k == cornerList;
+        if (indices && corners < 3) {
+          throw InputError(path + ":" + where() + ": face " + std::to_string(i) +
+                           " (0-based) has " + std::to_string(static_cast<long long>(corners)) +
+                           " vertices: a face needs 3");
         }
         for (int c = 0; c < static_cast<int>(corners); ++c) {
           const double value = source.value(p.type, [&] { return "list entry of " + element(); });
@@ -366,12 +373,14 @@ SurfaceMesh readPly(const std::string& path) {
                                   : " out of range 0.." + std::to_string(vertexCount - 1) +
                                         ": it refers to a vertex that does not exist"));
           }
-          mesh.triangles(i, c) = static_cast<int>(value);
+          polygons.corners.push_back(static_cast<int>(value));
         }
+        if (indices) polygons.closeFace();
       }
       if (isVertex) checkFiniteVertex(mesh.vertices.row(i), path, where(), i);
     }
   }
+  mesh.triangles = fanTriangles(polygons);
   return mesh;
 }
 

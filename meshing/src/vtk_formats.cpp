@@ -33,6 +33,7 @@
 #include <vtkXMLWriterBase.h>
 
 #include "formats.h"
+#include "polygon_fan.h"
 #include "tetblend/core/error.h"
 #include "tetblend/meshing/atomic_file.h"
 #include "text_parsing.h"
@@ -212,30 +213,32 @@ SurfaceMesh readVtp(const std::string& path) {
   vtkPolyData* poly = reader->GetOutput();
   if (poly->GetNumberOfVerts() + poly->GetNumberOfLines() + poly->GetNumberOfStrips() > 0) {
     throw InputError(path +
-                     ": the file holds vertex, line or strip cells; only triangle "
-                     "polygons are supported (apply Triangulate and keep only surfaces)");
+                     ": the file holds vertex, line or strip cells; only polygons are "
+                     "supported (apply Triangulate and keep only surfaces)");
   }
   SurfaceMesh mesh;
   mesh.vertices = pointsToVertices(poly->GetPoints(), path);
   vtkCellArray* polys = poly->GetPolys();
-  mesh.triangles.resize(polys->GetNumberOfCells(), 3);
+  PolygonFaces polygons;
   auto ids = vtkSmartPointer<vtkIdList>::New();
   for (vtkIdType f = 0; f < polys->GetNumberOfCells(); ++f) {
     polys->GetCellAtId(f, ids);
-    if (ids->GetNumberOfIds() != 3) {
+    if (ids->GetNumberOfIds() < 3) {
       throw InputError(path + ": polygon " + std::to_string(f) + " (0-based) has " +
-                       std::to_string(ids->GetNumberOfIds()) + " vertices: triangulate it first");
+                       std::to_string(ids->GetNumberOfIds()) + " vertices: a face needs 3");
     }
-    for (int c = 0; c < 3; ++c) {
+    for (vtkIdType c = 0; c < ids->GetNumberOfIds(); ++c) {
       const vtkIdType index = ids->GetId(c);
       if (index < 0 || index >= mesh.vertices.rows()) {
         throw InputError(path + ": polygon " + std::to_string(f) + " (0-based): index " +
                          std::to_string(index) + " out of range 0.." +
                          std::to_string(mesh.vertices.rows() - 1) + ": fix the file");
       }
-      mesh.triangles(f, c) = static_cast<int>(index);
+      polygons.corners.push_back(static_cast<int>(index));
     }
+    polygons.closeFace();
   }
+  mesh.triangles = fanTriangles(polygons);
   return mesh;
 }
 

@@ -224,16 +224,18 @@ TEST(SurfaceIo, MalformedFilesThrowInputErrorNamingLineAndValue) {
       {"a.obj", "v 1 2 x\n", "a.obj:1: expected a number for coordinate of vertex 0, found 'x'"},
       {"a.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\n\nv nan 0 0\n", "a.obj:5: NaN coordinate at vertex 3"},
       {"a.obj", "v 0 0 inf\n", "a.obj:1: infinite coordinate at vertex 0"},
-      {"a.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nf 1 2 3 4\n",
-       "a.obj:5: face 0 (0-based) has 4 vertices: triangulate it first"},
+      {"a.obj", "v 0 0 0\nv 1 0 0\nf 1 2\n",
+       "a.obj:3: face 0 (0-based) has 2 vertices: a face needs 3"},
       {"a.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 99\n",
        "a.obj:4: face 0 (0-based): index 99 out of range 1..3"},
       {"a.obj", "v 0 0 0\nf 1 -2 1\n", "a.obj:2: face 0 (0-based): relative index -2"},
       {"a.obj", "v 0 0 0\nf 1 a 1\n", "a.obj:2: expected an integer"},
       {"a.off", "OFX\n", "a.off:1: expected the header 'OFF'"},
       {"a.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n", "a.off:4: file ends after 2 of 3 vertices"},
-      {"a.off", "OFF\n4 1 0\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n4 0 1 2 3\n",
-       "a.off:7: face 0 (0-based) has 4 vertices: triangulate it first"},
+      {"a.off", "OFF\n2 1 0\n0 0 0\n1 0 0\n2 0 1\n",
+       "a.off:5: face 0 (0-based) has 2 vertices: a face needs 3"},
+      {"a.off", "OFF\n4 1 0\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n4 0 1 2\n",
+       "a.off:7: face 0 (0-based): expected 4 vertex indices, found 3"},
       {"a.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n",
        "a.off:6: face 0 (0-based): index 7 out of range 0..2"},
       {"a.off", "OFF\n1 0 0\n0 -nan 0\n", "a.off:3: NaN coordinate at vertex 0"},
@@ -243,8 +245,8 @@ TEST(SurfaceIo, MalformedFilesThrowInputErrorNamingLineAndValue) {
        "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\nproperty "
        "float z\n"
        "element face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n"
-       "1 1 0\n4 0 1 2 3\n",
-       "a.ply:14: face 0 (0-based) has 4 vertices: triangulate it first"},
+       "1 1 0\n2 0 1\n",
+       "a.ply:14: face 0 (0-based) has 2 vertices: a face needs 3"},
       {"a.ply",
        "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty "
        "float z\n"
@@ -447,7 +449,62 @@ TEST(SurfaceIo, WriterRefusesTargetsThatAreNotRegularFiles) {
   EXPECT_EQ(dir.entryCount(), 3);
 }
 
-TEST(SurfaceIo, VtpWithPolygonsOrStripsIsRefused) {
+// One triangle, one quad and one pentagon (the quad's second corner is the
+// triangle's third), as every reader must split them: the fan from each
+// face's first corner, in face order.
+constexpr char kPolygonObj[] =
+    "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nv 2 0 0\nv 2 1 0\nv 3 0.5 0\n"
+    "f 1 2 3\nf 2 5 6 4\nf 5 7 6 4 2\n";
+constexpr char kPolygonOff[] =
+    "OFF\n7 3 0\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n2 0 0\n2 1 0\n3 0.5 0\n"
+    "3 0 1 2\n4 1 4 5 3\n5 4 6 5 3 1\n";
+constexpr char kPolygonPly[] =
+    "ply\nformat ascii 1.0\nelement vertex 7\nproperty float x\nproperty float y\n"
+    "property float z\nelement face 3\nproperty list uchar int vertex_indices\nend_header\n"
+    "0 0 0\n1 0 0\n0 1 0\n1 1 0\n2 0 0\n2 1 0\n3 0.5 0\n"
+    "3 0 1 2\n4 1 4 5 3\n5 4 6 5 3 1\n";
+
+Triangles polygonFans() {
+  Triangles triangles(6, 3);
+  triangles << 0, 1, 2,           // the triangle
+      1, 4, 5, 1, 5, 3,           // the quad (1 4 5 3)
+      4, 6, 5, 4, 5, 3, 4, 3, 1;  // the pentagon (4 6 5 3 1)
+  return triangles;
+}
+
+TEST(SurfaceIo, PolygonsAreSplitIntoTheFanFromTheirFirstCornerInEveryFormat) {
+  TempDir dir;
+  writeText(dir.file("p.obj"), kPolygonObj);
+  writeText(dir.file("p.off"), kPolygonOff);
+  writeText(dir.file("p.ply"), kPolygonPly);
+  auto points = vtkSmartPointer<vtkPoints>::New();
+  const SurfaceMesh fromObj = readSurface(dir.file("p.obj"));
+  for (Eigen::Index v = 0; v < fromObj.vertices.rows(); ++v) {
+    points->InsertNextPoint(fromObj.vertices(v, 0), fromObj.vertices(v, 1), fromObj.vertices(v, 2));
+  }
+  auto polygons = vtkSmartPointer<vtkCellArray>::New();
+  const vtkIdType triangle[3] = {0, 1, 2};
+  const vtkIdType quad[4] = {1, 4, 5, 3};
+  const vtkIdType pentagon[5] = {4, 6, 5, 3, 1};
+  polygons->InsertNextCell(3, triangle);
+  polygons->InsertNextCell(4, quad);
+  polygons->InsertNextCell(5, pentagon);
+  auto poly = vtkSmartPointer<vtkPolyData>::New();
+  poly->SetPoints(points);
+  poly->SetPolys(polygons);
+  auto writer = vtkSmartPointer<vtkXMLPolyDataWriter>::New();
+  writer->SetInputData(poly);
+  writer->SetFileName(dir.file("p.vtp").c_str());
+  ASSERT_EQ(writer->Write(), 1);
+  for (const char* name : {"p.obj", "p.off", "p.ply", "p.vtp"}) {
+    SCOPED_TRACE(name);
+    const SurfaceMesh mesh = readSurface(dir.file(name));
+    EXPECT_EQ(mesh.vertices.rows(), 7);
+    EXPECT_EQ(mesh.triangles, polygonFans());
+  }
+}
+
+TEST(SurfaceIo, VtpWithStripsIsRefused) {
   TempDir dir;
   auto points = vtkSmartPointer<vtkPoints>::New();
   for (int i = 0; i < 4; ++i) points->InsertNextPoint(i & 1, i >> 1, 0);
@@ -456,14 +513,8 @@ TEST(SurfaceIo, VtpWithPolygonsOrStripsIsRefused) {
   quads->InsertNextCell(4, quad);
   auto poly = vtkSmartPointer<vtkPolyData>::New();
   poly->SetPoints(points);
-  poly->SetPolys(quads);
   auto writer = vtkSmartPointer<vtkXMLPolyDataWriter>::New();
   writer->SetInputData(poly);
-  writer->SetFileName(dir.file("quad.vtp").c_str());
-  ASSERT_EQ(writer->Write(), 1);
-  EXPECT_NE(messageOf(dir.file("quad.vtp")).find("polygon 0 (0-based) has 4 vertices: triangulate"),
-            std::string::npos);
-
   poly->SetPolys(vtkSmartPointer<vtkCellArray>::New());
   poly->SetStrips(quads);
   writer->SetFileName(dir.file("strip.vtp").c_str());

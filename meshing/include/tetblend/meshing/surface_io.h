@@ -7,8 +7,9 @@
 //   .stl   STL, ascii or binary (read only)
 //   .vtp   VTK XML PolyData
 // Vertex order is kept exactly as in the file, so results can be mapped back
-// to the input by index. Polygons with more than three corners are refused,
-// not triangulated: triangulate them first.
+// to the input by index. Polygons with more than three corners (quads of an
+// animation exported from Blender, say) are split into the triangle fan from
+// their first corner: files with the same faces get the same triangles.
 
 #include <string>
 
@@ -18,14 +19,15 @@
 
 namespace tetblend {
 
-/// Reads the triangle surface at `path`: #V by 3 positions (file units) and
-/// #F by 3 zero-based triangle indices in file order.
+/// Reads the surface at `path`: #V by 3 positions (file units) and #F by 3
+/// zero-based triangle indices in file order, a face of n > 3 corners giving
+/// its n - 2 fan triangles (c0, ci, ci+1) in place.
 /// STL stores each triangle's corners separately; the reader merges exactly
 /// coincident positions (bitwise equal after -0 == +0), and the vertex order
 /// is the order of first appearance in the file.
 /// Throws InputError (naming file, line or byte offset, value and remedy) for
 /// a missing or unreadable file, an unknown extension, malformed numbers,
-/// NaN/Inf coordinates, faces that are not triangles and out-of-range indices.
+/// NaN/Inf coordinates, faces of fewer than 3 corners and out-of-range indices.
 SurfaceMesh readSurface(const std::string& path);
 
 /// Options of writeSurface.
