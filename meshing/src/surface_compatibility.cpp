@@ -1,8 +1,12 @@
 // Example compatibility, the throwing wrappers, unreferenced vertices and the
 // message helpers of surface_validation.h.
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <iterator>
+#include <map>
 #include <sstream>
+#include <utility>
 
 #include "surface_messages.h"
 #include "tetblend/core/error.h"
@@ -100,14 +104,18 @@ std::vector<SurfaceProblem> validateExample(const SurfaceMesh& rest, const Surfa
   const Eigen::Index common = std::min(nf, rest.triangles.rows());
   for (Eigen::Index f = 0; f < common; ++f) {
     if (example.triangles.row(f) == rest.triangles.row(f)) continue;
+    if (nf == rest.triangles.rows() &&
+        flippedQuadDiagonals(rest.triangles, example.triangles) >= 0) {
+      break;
+    }
     problems.push_back({SurfaceProblemKind::kConnectivityMismatch, f, 0.0,
                         prefix + "face " + std::to_string(f) + " is " +
                             detail::faceText(example.triangles, f) +
                             " but the rest surface's face " + std::to_string(f) + " is " +
                             detail::faceText(rest.triangles, f) +
                             ": the example's connectivity differs from the rest (first "
-                            "differing face); export every example from the same mesh "
-                            "without re-triangulating or re-ordering"});
+                            "differing face, after order, corner rotation and quad diagonals); "
+                            "export every example from the same mesh"});
     break;
   }
   for (Eigen::Index v = 0; v < nv; ++v) {
@@ -121,6 +129,67 @@ std::vector<SurfaceProblem> validateExample(const SurfaceMesh& rest, const Surfa
     }
   }
   return problems;
+}
+
+namespace {
+
+using Corners = std::array<int, 3>;
+
+// The triangle with its smallest index first, its cyclic order kept.
+Corners canonical(int a, int b, int c) {
+  if (b < a && b < c) return {b, c, a};
+  if (c < a && c < b) return {c, a, b};
+  return {a, b, c};
+}
+
+std::vector<Corners> canonicalRows(const Triangles& triangles) {
+  std::vector<Corners> rows;
+  for (Eigen::Index f = 0; f < triangles.rows(); ++f) {
+    rows.push_back(canonical(triangles(f, 0), triangles(f, 1), triangles(f, 2)));
+  }
+  std::sort(rows.begin(), rows.end());
+  return rows;
+}
+
+}  // namespace
+
+int flippedQuadDiagonals(const Triangles& rest, const Triangles& example) {
+  if (rest.rows() != example.rows()) return -1;
+  const std::vector<Corners> restRows = canonicalRows(rest), exampleRows = canonicalRows(example);
+  std::vector<Corners> restOnly, exampleOnly;
+  std::set_difference(restRows.begin(), restRows.end(), exampleRows.begin(), exampleRows.end(),
+                      std::back_inserter(restOnly));
+  std::set_difference(exampleRows.begin(), exampleRows.end(), restRows.begin(), restRows.end(),
+                      std::back_inserter(exampleOnly));
+  // Pair the rest's own triangles across a shared edge u-v, t1 = (u, v, a)
+  // and t2 = (v, u, b): their quad a-u-b-v split along a-b is (a, u, b) and
+  // (b, v, a), which the example must have instead.
+  std::map<std::pair<int, int>, std::size_t> byDirectedEdge;
+  for (std::size_t i = 0; i < restOnly.size(); ++i) {
+    for (int k = 0; k < 3; ++k) byDirectedEdge[{restOnly[i][k], restOnly[i][(k + 1) % 3]}] = i;
+  }
+  std::map<Corners, int> wanted;  // the example's own triangles, not yet paired
+  for (const Corners& t : exampleOnly) ++wanted[t];
+  std::vector<char> paired(restOnly.size(), 0);
+  int flips = 0;
+  for (std::size_t i = 0; i < restOnly.size(); ++i) {
+    for (int k = 0; k < 3 && !paired[i]; ++k) {
+      const int u = restOnly[i][k], v = restOnly[i][(k + 1) % 3], a = restOnly[i][(k + 2) % 3];
+      const auto other = byDirectedEdge.find({v, u});
+      if (other == byDirectedEdge.end() || paired[other->second] || other->second == i) continue;
+      const Corners& t2 = restOnly[other->second];
+      const int b = t2[0] + t2[1] + t2[2] - u - v;
+      const Corners first = canonical(a, u, b), second = canonical(b, v, a);
+      auto f = wanted.find(first), s = wanted.find(second);
+      if (f == wanted.end() || s == wanted.end() || f->second == 0 || s->second == 0) continue;
+      --f->second;
+      --s->second;
+      paired[i] = paired[other->second] = 1;
+      ++flips;
+    }
+    if (!paired[i]) return -1;
+  }
+  return flips;
 }
 
 void requireValidRest(const SurfaceMesh& mesh, const std::string& sourceName,

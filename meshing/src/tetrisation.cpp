@@ -63,7 +63,11 @@ std::vector<TetMesh> tetriseCompatible(const SurfaceMesh& rest,
   std::vector<TetMesh> meshes;
   meshes.reserve(examples.size() + 1);
   meshes.push_back(tetrise(rest));
-  for (const SurfaceMesh& example : examples) meshes.push_back(tetrise(example));
+  // The rest's triangles: an example may list them in another order or split
+  // a quad along the other diagonal (validateExample).
+  for (const SurfaceMesh& example : examples) {
+    meshes.push_back(tetrise(SurfaceMesh{example.vertices, rest.triangles}));
+  }
   return meshes;
 }
 

@@ -146,6 +146,15 @@ ModelData prepareModel(const SurfaceMesh& rest, const std::vector<SurfaceMesh>& 
   }
   for (std::size_t k = 0; k < examples.size(); ++k) {
     requireCompatibleExample(rest, examples[k], exampleNames[k]);
+    const int flips = examples[k].triangles == rest.triangles
+                          ? 0
+                          : flippedQuadDiagonals(rest.triangles, examples[k].triangles);
+    if (flips > 0) {
+      say(messages.warning, exampleNames[k] + ": " + std::to_string(flips) +
+                                " quads are split along the other diagonal than in the rest (an "
+                                "exporter that triangulates each frame by its shape): the rest's "
+                                "triangles are used for every example");
+    }
     if (examples[k].vertices == rest.vertices) {
       say(messages.warning, exampleNames[k] + ": every vertex equals the rest's (" + restName +
                                 "): blending this example changes nothing");

@@ -373,6 +373,73 @@ TEST(SurfaceValidation, ExampleWithDifferentConnectivityNamesTheFirstFace) {
   EXPECT_THROW(requireCompatibleExample(rest, example, "pose.off"), InputError);
 }
 
+// The cube's square faces are quads of two triangles. An exporter that
+// splits each frame's quads by its shape may pick the other diagonal, list
+// the triangles in another order and start them at another corner: the same
+// surface, accepted. Triangle f = (u, v, a) and its neighbour (v, u, b)
+// across u-v become (a, u, b) and (b, v, a).
+Triangles withFlippedDiagonal(const Triangles& triangles, Eigen::Index f) {
+  const int u = triangles(f, 0), v = triangles(f, 1), a = triangles(f, 2);
+  for (Eigen::Index g = 0; g < triangles.rows(); ++g) {
+    for (int k = 0; k < 3; ++k) {
+      if (triangles(g, k) != v || triangles(g, (k + 1) % 3) != u) continue;
+      const int b = triangles(g, (k + 2) % 3);
+      Triangles flipped = triangles;
+      flipped.row(f) << a, u, b;
+      flipped.row(g) << b, v, a;
+      return flipped;
+    }
+  }
+  ADD_FAILURE() << "triangle " << f << " has no neighbour across (" << u << ", " << v << ")";
+  return triangles;
+}
+
+TEST(SurfaceValidation, ExampleWithQuadsSplitAlongTheOtherDiagonalIsTheSameSurface) {
+  const SurfaceMesh rest = cube();
+  SurfaceMesh example = cube(Eigen::Vector3d(1, 2, 3), 2.0);
+  const Triangles once = withFlippedDiagonal(rest.triangles, 0);
+  EXPECT_EQ(flippedQuadDiagonals(rest.triangles, once), 1);
+  // A second quad, through a triangle with none of the first quad's corners
+  // (so the two flips share no triangle).
+  std::vector<int> firstQuad;
+  for (Eigen::Index f = 0; f < once.rows(); ++f) {
+    if (once.row(f) == rest.triangles.row(f)) continue;
+    for (int k = 0; k < 3; ++k) firstQuad.push_back(once(f, k));
+  }
+  Eigen::Index apart = 0;
+  while ((once.row(apart).array() == firstQuad[0] || once.row(apart).array() == firstQuad[1] ||
+          once.row(apart).array() == firstQuad[2] || once.row(apart).array() == firstQuad[3] ||
+          once.row(apart).array() == firstQuad[4] || once.row(apart).array() == firstQuad[5])
+             .any()) {
+    ++apart;
+  }
+  ASSERT_LT(apart, once.rows());
+  const Triangles twice = withFlippedDiagonal(once, apart);
+  EXPECT_EQ(flippedQuadDiagonals(rest.triangles, twice), 2);
+  // Then the rows reordered and every triangle's corners rotated.
+  Triangles shuffled(twice.rows(), 3);
+  for (Eigen::Index f = 0; f < shuffled.rows(); ++f) {
+    const Eigen::Index from = (5 * f + 3) % shuffled.rows();  // 5 is coprime to 12
+    shuffled.row(f) << twice(from, 1), twice(from, 2), twice(from, 0);
+  }
+  EXPECT_EQ(flippedQuadDiagonals(rest.triangles, shuffled), 2);
+  example.triangles = shuffled;
+  EXPECT_TRUE(validateExample(rest, example, "pose.off").empty());
+  // Same rows in another order only: no flip.
+  Triangles reordered = rest.triangles;
+  reordered.row(0).swap(reordered.row(11));
+  EXPECT_EQ(flippedQuadDiagonals(rest.triangles, reordered), 0);
+  // Not the same surface: a face turned over, or a quad's triangles rebuilt
+  // with a wrong orientation.
+  Triangles turned = rest.triangles;
+  turned.row(3) << rest.triangles(3, 0), rest.triangles(3, 2), rest.triangles(3, 1);
+  EXPECT_EQ(flippedQuadDiagonals(rest.triangles, turned), -1);
+  Triangles wrong = withFlippedDiagonal(rest.triangles, 0);
+  wrong.row(0) << wrong(0, 0), wrong(0, 2), wrong(0, 1);
+  EXPECT_EQ(flippedQuadDiagonals(rest.triangles, wrong), -1);
+  EXPECT_FALSE(validateExample(rest, SurfaceMesh{example.vertices, wrong}, "pose.off").empty());
+}
+
 TEST(SurfaceValidation, ExampleWithDifferentVertexCountOrNonFiniteCoordinates) {
   const SurfaceMesh rest = cube();
   SurfaceMesh example = rest;

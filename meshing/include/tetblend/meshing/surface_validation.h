@@ -84,10 +84,22 @@ SurfaceValidation validateSurface(const SurfaceMesh& mesh, const std::string& so
                                   const SurfaceValidationOptions& options = {});
 
 /// Checks that `example` (from `exampleName`) is compatible with `rest`: same
-/// vertex count, same face count, the same triangles row by row (the first
-/// differing face is reported with both triangles), finite coordinates.
+/// vertex count, same face count, the same surface (the same triangles, or
+/// the same up to their order, corner rotation and quad diagonals: see
+/// flippedQuadDiagonals; else the first differing face is reported with both
+/// triangles), finite coordinates. Only the example's positions are used
+/// afterwards, with the rest's triangles.
 std::vector<SurfaceProblem> validateExample(const SurfaceMesh& rest, const SurfaceMesh& example,
                                             const std::string& exampleName);
+
+/// How `example`'s triangles (#F by 3) differ from `rest`'s: -1 when they
+/// describe another surface; else the number of quads (two triangles sharing
+/// an edge) that the example splits along the other diagonal, 0 when the
+/// triangles are the same up to their order and the rotation of their
+/// corners. An exporter that splits each frame's quads by its shape
+/// (Blender's "Beauty") gives such frames; the pairing is greedy, so an
+/// ambiguous pattern counts as another surface.
+int flippedQuadDiagonals(const Triangles& rest, const Triangles& example);
 
 /// validateSurface, then throws InputError with the first problem's message
 /// and the number of further problems, if any.
