@@ -108,6 +108,8 @@ struct CompatibleTetResult {
 
 /// Factor-once builder of compatible tet meshes for one rest mesh
 /// (geometry-central style: build once, call place() for every example).
+/// Its const methods may be called from several threads at once (the
+/// examples of buildCompatibleTetMeshes are placed that way).
 class CompatibleTetBuilder {
  public:
   /// `rest`: #V by 3 vertices and #T by 4 positively oriented tets whose

@@ -21,7 +21,9 @@
 //     all-surface tets inverted by any example (repeated while new ones
 //     appear, at most maxRounds times);
 //  2. every example is placed (harmonic → ARAP → untangling,
-//     compatible_tets.h; one factorisation for all);
+//     compatible_tets.h; one factorisation for all), several at once when
+//     there are threads and memory for it (the result does not depend on
+//     how many);
 //  3. while an example whose surface does not intersect itself keeps
 //     inverted tets (at most maxRounds rounds per example): those tets are
 //     split as in stage 1, or where they already have an interior vertex
@@ -84,7 +86,8 @@ struct CompatibleTetMeshes {
   int rigidSimplicesOutside = 0;   ///< edges and faces split in stage 1 for leaving a solid
 };
 
-/// Called after each stage with a short description (for progress display).
+/// Called after each stage with a short description (for progress display);
+/// from one thread at a time, though not always the caller's.
 using MeshingProgress = std::function<void(const char* stage)>;
 
 /// Builds compatible tet meshes for `rest` (#V by 3 vertices, #T by 4
