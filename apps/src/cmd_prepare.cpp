@@ -37,7 +37,7 @@ void registerPrepare(CLI::App& root) {
   auto args = std::make_shared<PrepareArgs>();
   CLI::App* cmd = root.add_subcommand(
       "prepare",
-      "Validate a rest surface and its examples (same triangles), fill the rest with tets "
+      "Validate a rest surface and its examples (same vertices and faces), fill the rest with tets "
       "(TetGen, surface kept) or tetrise it, place each example's interior vertices so all "
       "share the rest's tets, and save the model file that blend, batch, variations and "
       "animate read. Parametrisation and the stitch factorisation are redone on load.");
