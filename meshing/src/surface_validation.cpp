@@ -108,8 +108,10 @@ void checkUnreferenced(const SurfaceMesh& mesh, Collector& out) {
   for (int v : unreferencedVertices(mesh)) {
     out.add(SurfaceProblemKind::kUnreferencedVertex, v, 0.0,
             "vertex " + std::to_string(v) +
-                " is used by no face: it would float free in the output; drop it "
-                "explicitly (removeVertices with unreferencedVertices) or fix the faces");
+                " is used by no face: it would float free in the output; remove the unused "
+                "vertices from the rest and every example alike (MeshLab: 'Remove "
+                "Unreferenced Vertices'; C++: removeVertices with unreferencedVertices) or "
+                "fix the faces");
   }
 }
 
