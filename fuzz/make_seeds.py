@@ -212,7 +212,7 @@ def medit_seeds():
 
 
 def model_bytes(version, vertices, tets, triangles, surface_count, examples, names, excluded,
-                counts=None):
+                counts=None, input_rows=()):
     """A model file (apps/src/model_file.h); `counts` overrides the 5 header counts."""
     payload = struct.pack("<5Q", *(counts or (len(vertices), len(tets), len(triangles),
                                               surface_count, len(examples))))
@@ -225,6 +225,9 @@ def model_bytes(version, vertices, tets, triangles, surface_count, examples, nam
         payload += struct.pack("<Q", len(name)) + name
     if version >= 2:
         payload += struct.pack("<Q", len(excluded)) + b"".join(struct.pack("<i", t) for t in excluded)
+    if version >= 3:
+        payload += struct.pack("<Q", len(input_rows)) + b"".join(
+            struct.pack("<i", r) for r in input_rows)
     hash_ = 0xcbf29ce484222325
     for byte in payload:
         hash_ = ((hash_ ^ byte) * 0x100000001b3) & 0xffffffffffffffff
@@ -237,6 +240,11 @@ def model_seeds():
     stretched = [(2 * x, y, z) for x, y, z in CUBE_V]
     seed("model", "cube_v2.tbm", model_bytes(2, CUBE_V, CUBE_T, surface, 8, [stretched],
                                              [b"rest.obj", b"stretched.obj"], [1, 3]))
+    # A seam: input vertices 8 and 9 are copies of surface vertices 1 and 2.
+    seamed = [(0, 9, 8), (0, 1, 4), (0, 4, 2)]
+    seed("model", "cube_v3_seam.tbm",
+         model_bytes(3, CUBE_V, CUBE_T, seamed, 8, [stretched], [b"rest.obj", b"stretched.obj"],
+                     [1], input_rows=list(range(8)) + [1, 2]))
     seed("model", "cube_v1.tbm", model_bytes(1, CUBE_V, CUBE_T, surface, 8, [],
                                              [b"rest.obj"], []))
     huge = (1 << 31) - 1

@@ -9,10 +9,10 @@ namespace tetblend::cli {
 
 namespace {
 
-NamedArray displacementArray(const Vertices& positions, const Vertices& rest, Eigen::Index rows) {
+NamedArray displacementArray(const Vertices& positions, const Vertices& rest) {
   NamedArray a{"displacement", 3, {}};
-  a.values.reserve(static_cast<std::size_t>(rows) * 3);
-  for (Eigen::Index i = 0; i < rows; ++i)
+  a.values.reserve(static_cast<std::size_t>(positions.rows()) * 3);
+  for (Eigen::Index i = 0; i < positions.rows(); ++i)
     for (int c = 0; c < 3; ++c) a.values.push_back(positions(i, c) - rest(i, c));
   return a;
 }
@@ -61,17 +61,18 @@ void writeBlendResult(const std::string& outputPath, const ModelData& model,
   }
   if (extensionOf(outputPath) == ".vtu") {
     MeshDataArrays tetData;
-    tetData.pointData.push_back(
-        displacementArray(positions, model.rest.vertices, positions.rows()));
+    tetData.pointData.push_back(displacementArray(positions, model.rest.vertices));
     tetData.cellData = cellData;
     writeTetMesh(outputPath, TetMesh{positions, model.rest.tets}, tetData, compression);
   }
 
-  const Eigen::Index ns = model.surfaceVertexCount;
-  const SurfaceMesh surface{positions.topRows(ns), model.surfaceTriangles};
+  const SurfaceMesh surface{model.inputVertices(positions), model.surfaceTriangles};
+  const Eigen::Index ns = surface.vertices.rows();
   MeshDataArrays surfaceData;
-  surfaceData.pointData.push_back(displacementArray(positions, model.rest.vertices, ns));
-  // The surface keeps the rest's vertex order: vertex i is input vertex i.
+  surfaceData.pointData.push_back(
+      displacementArray(surface.vertices, model.inputVertices(model.rest.vertices)));
+  // The surface has the input's vertices and order (seam copies included):
+  // vertex i is input vertex i.
   NamedArray inputIndex{"input_vertex_index", 1, std::vector<double>(static_cast<std::size_t>(ns))};
   for (Eigen::Index i = 0; i < ns; ++i)
     inputIndex.values[static_cast<std::size_t>(i)] = static_cast<double>(i);

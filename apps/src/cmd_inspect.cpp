@@ -87,6 +87,12 @@ void inspectModel(const std::string& path) {
               m.restSource.c_str(), static_cast<long long>(m.rest.vertices.rows()),
               m.surfaceVertexCount, static_cast<long long>(m.rest.tets.rows()),
               static_cast<long long>(m.surfaceTriangles.rows()));
+  if (!m.inputVertexRows.empty()) {
+    std::printf(
+        "  input surface: %lld vertices (copies along texture or normal seams merged "
+        "for the tets)\n",
+        static_cast<long long>(m.inputVertexCount()));
+  }
   printBox(m.rest.vertices);
   printTetQuality(m.rest);
   if (!m.excludedTets.empty()) {

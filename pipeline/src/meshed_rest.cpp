@@ -57,10 +57,11 @@ std::pair<int, int> coincidentVertices(const Vertices& vertices) {
   return first;
 }
 
-// An open surface with two vertices at one position: its holes are most
-// likely the two sides of a seam (texture and normal seams split vertices),
-// which no fill can close; merging the copies can.
-void refuseSeams(const SurfaceMesh& surface, const std::string& restName) {
+// An open surface with two vertices at one position after its seams were
+// zipped (seam_welding.h): holes whose rims touch there, or more than two
+// sheets along one edge. No fill without new vertices closes them, and
+// merging the two would pinch the surface (CGAL's elephant-with-holes).
+void refuseTouchingRims(const SurfaceMesh& surface, const std::string& restName) {
   if (!surface.vertices.allFinite()) return;  // validateSurface names the value
   const auto [a, b] = coincidentVertices(surface.vertices);
   if (a < 0) return;
@@ -73,10 +74,10 @@ void refuseSeams(const SurfaceMesh& surface, const std::string& restName) {
       });
   if (!open) return;
   throw InputError(restName + ": vertices " + std::to_string(a) + " and " + std::to_string(b) +
-                   " are at the same position and the surface is open, so it is cut along a "
-                   "seam (texture and normal seams split vertices) that no fill can close: "
-                   "merge coincident vertices in the rest and every example alike (e.g. "
-                   "MeshLab's Merge Close Vertices) and prepare again");
+                   " are at the same position on the rims of its holes, which touch there (not "
+                   "a seam: no two boundary edges join them to copies of their neighbours), so "
+                   "no fill without new vertices closes them: close the holes yourself (e.g. "
+                   "MeshLab's Close Holes), or use the per-face tetrisation (--tetrise)");
 }
 
 // A triangle filling a hole that intersects the surface: the fill is fixed by
@@ -120,7 +121,7 @@ MeshedRest meshedRest(const SurfaceMesh& rest, const std::string& restName,
   MeshedRest meshed;
   SurfaceMesh oriented = rest;
   orientWherePossible(oriented);
-  if (options.fillHoles) refuseSeams(oriented, restName);
+  if (options.fillHoles) refuseTouchingRims(oriented, restName);
   meshed.surface = closedSurface(oriented, restName, options, meshed.filling);
   orientWherePossible(meshed.surface);
   const Eigen::Index userFaces = rest.triangles.rows();

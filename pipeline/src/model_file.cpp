@@ -132,6 +132,8 @@ std::vector<unsigned char> encodePayload(const ModelData& m) {
   for (const std::string& s : m.exampleSources) w.text(s);
   w.u64(m.excludedTets.size());
   for (int t : m.excludedTets) w.i32(t);
+  w.u64(m.inputVertexRows.size());
+  for (int row : m.inputVertexRows) w.i32(row);
   return std::move(w.bytes());
 }
 
@@ -170,6 +172,11 @@ ModelData decodePayload(const unsigned char* data, std::size_t size, const std::
     r.requireRoom(nx, 4, "excluded tet count");
     for (std::uint64_t i = 0; i < nx; ++i) m.excludedTets.push_back(r.i32());
   }
+  if (version >= 3) {
+    const std::uint64_t nu = r.count("input vertex count");
+    r.requireRoom(nu, 4, "input vertex count");
+    for (std::uint64_t i = 0; i < nu; ++i) m.inputVertexRows.push_back(r.i32());
+  }
   if (!r.atEnd()) {
     throw InputError(path +
                      ": damaged model file (bytes after the payload); re-run 'tetblend prepare'");
@@ -184,6 +191,20 @@ std::uint64_t readLittle(const std::vector<unsigned char>& b, std::size_t at, in
 }
 
 }  // namespace
+
+Eigen::Index ModelData::inputVertexCount() const {
+  return inputVertexRows.empty() ? surfaceVertexCount
+                                 : static_cast<Eigen::Index>(inputVertexRows.size());
+}
+
+Vertices ModelData::inputVertices(const Vertices& positions) const {
+  if (inputVertexRows.empty()) return positions.topRows(surfaceVertexCount);
+  Vertices result(static_cast<Eigen::Index>(inputVertexRows.size()), 3);
+  for (std::size_t i = 0; i < inputVertexRows.size(); ++i) {
+    result.row(static_cast<Eigen::Index>(i)) = positions.row(inputVertexRows[i]);
+  }
+  return result;
+}
 
 std::uint64_t fnv1a64(const unsigned char* data, std::size_t size, std::uint64_t hash) {
   constexpr std::uint64_t kPrime = 0x100000001b3ULL;
@@ -205,9 +226,17 @@ void checkModel(const ModelData& m, const std::string& what) {
       if (m.rest.tets(i, c) < 0 || m.rest.tets(i, c) >= nv)
         throw InputError(what + ": tet " + std::to_string(i) + " refers to vertex " +
                          std::to_string(m.rest.tets(i, c)) + " of " + std::to_string(nv));
+  for (std::size_t i = 0; i < m.inputVertexRows.size(); ++i) {
+    const int row = m.inputVertexRows[i];
+    if (row < 0 || row >= m.surfaceVertexCount) {
+      throw InputError(what + ": input vertex " + std::to_string(i) + " is on row " +
+                       std::to_string(row) + ", not a surface vertex; re-run 'tetblend prepare'");
+    }
+  }
+  const Eigen::Index inputVertices = m.inputVertexCount();
   for (Eigen::Index i = 0; i < m.surfaceTriangles.rows(); ++i)
     for (int c = 0; c < 3; ++c)
-      if (m.surfaceTriangles(i, c) < 0 || m.surfaceTriangles(i, c) >= m.surfaceVertexCount)
+      if (m.surfaceTriangles(i, c) < 0 || m.surfaceTriangles(i, c) >= inputVertices)
         throw InputError(what + ": surface triangle " + std::to_string(i) + " refers to vertex " +
                          std::to_string(m.surfaceTriangles(i, c)) + ", not a surface vertex");
   if (m.exampleSources.size() != m.examples.size()) {

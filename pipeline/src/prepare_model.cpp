@@ -8,6 +8,7 @@
 #include "tetblend/core/tet_geometry.h"
 #include "tetblend/meshing/example_aware_tets.h"
 #include "tetblend/meshing/hole_filling.h"
+#include "tetblend/meshing/seam_welding.h"
 #include "tetblend/meshing/self_intersection.h"
 #include "tetblend/meshing/surface_io.h"
 #include "tetblend/meshing/surface_validation.h"
@@ -109,6 +110,66 @@ void refuseSelfIntersecting(const Triangles& triangles, const std::vector<Surfac
   }
 }
 
+// The meshed rest of the zipped surface; a refusal's vertex numbers then
+// count the zipped surface's vertices, and the message says so.
+MeshedRest meshedZippedRest(const SeamWelding& welding, const std::string& restName,
+                            const PrepareOptions& options) {
+  try {
+    return meshedRest(welding.surface, restName, options);
+  } catch (const InputError& error) {
+    if (welding.mergedVertices == 0) throw;
+    throw InputError(std::string(error.what()) + " (vertex numbers count the surface after " +
+                     std::to_string(welding.mergedVertices) +
+                     " copies of seam vertices were merged)");
+  }
+}
+
+// Refuses an example that is not the rest's surface; warns about one whose
+// quads are split the other way, and about one equal to the rest.
+void checkExamples(const SurfaceMesh& rest, const std::vector<SurfaceMesh>& examples,
+                   const std::string& restName, const std::vector<std::string>& exampleNames,
+                   const PrepareMessages& messages) {
+  for (std::size_t k = 0; k < examples.size(); ++k) {
+    requireCompatibleExample(rest, examples[k], exampleNames[k]);
+    const int flips = examples[k].triangles == rest.triangles
+                          ? 0
+                          : flippedQuadDiagonals(rest.triangles, examples[k].triangles);
+    if (flips > 0) {
+      say(messages.warning, exampleNames[k] + ": " + std::to_string(flips) +
+                                " quads are split along the other diagonal than in the rest (an "
+                                "exporter that triangulates each frame by its shape): the rest's "
+                                "triangles are used for every example");
+    }
+    if (examples[k].vertices == rest.vertices) {
+      say(messages.warning, exampleNames[k] + ": every vertex equals the rest's (" + restName +
+                                "): blending this example changes nothing");
+    }
+  }
+}
+
+// The model of the per-face tetrisation: the user's surface as it is (open
+// or not, seams and all), no interior.
+ModelData tetrisedModel(const SurfaceMesh& rest, const std::vector<SurfaceMesh>& examples,
+                        const std::string& restName, const std::vector<std::string>& exampleNames,
+                        const PrepareOptions& options, const PrepareMessages& messages) {
+  SurfaceValidationOptions validation;
+  validation.requireClosed = false;
+  requireValidRest(rest, restName, validation);
+  checkExamples(rest, examples, restName, exampleNames, messages);
+  if (options.strict) refuseSelfIntersecting(rest.triangles, examples, exampleNames);
+  advance(messages, 1);
+  ModelData model;
+  model.surfaceTriangles = rest.triangles;
+  model.surfaceVertexCount = static_cast<int>(rest.vertices.rows());
+  model.restSource = restName;
+  model.exampleSources = exampleNames;
+  std::vector<TetMesh> meshes = tetriseCompatible(rest, examples, exampleNames);
+  model.rest = std::move(meshes.front());
+  for (std::size_t k = 1; k < meshes.size(); ++k) model.examples.push_back(meshes[k].vertices);
+  advance(messages, exampleNames.size() + 1);
+  return model;
+}
+
 }  // namespace
 
 std::size_t prepareStepCount(std::size_t exampleCount) { return exampleCount + 2; }
@@ -130,51 +191,40 @@ ModelData prepareModel(const SurfaceMesh& rest, const std::vector<SurfaceMesh>& 
     throw InputError("prepare: " + std::to_string(exampleNames.size()) + " names given for " +
                      std::to_string(examples.size()) + " examples");
   }
-  MeshedRest meshed;
   if (options.tetrise) {
-    SurfaceValidationOptions validation;
-    validation.requireClosed = false;
-    requireValidRest(rest, restName, validation);
-    meshed.surface = rest;
-  } else {
-    meshed = meshedRest(rest, restName, options);
+    return tetrisedModel(rest, examples, restName, exampleNames, options, messages);
   }
+  // TetGen meshes the rest with its seams zipped; the model keeps the
+  // input's vertices and faces.
+  const SeamWelding welding = weldSeams(rest);
+  const MeshedRest meshed = meshedZippedRest(welding, restName, options);
   if (meshed.reorientedFaces > 0) {
     say(messages.warning, restName + ": " + std::to_string(meshed.reorientedFaces) +
                               " faces point inwards or against their neighbours: they are meshed "
                               "reversed (the blended surfaces keep the input's faces)");
   }
-  for (std::size_t k = 0; k < examples.size(); ++k) {
-    requireCompatibleExample(rest, examples[k], exampleNames[k]);
-    const int flips = examples[k].triangles == rest.triangles
-                          ? 0
-                          : flippedQuadDiagonals(rest.triangles, examples[k].triangles);
-    if (flips > 0) {
-      say(messages.warning, exampleNames[k] + ": " + std::to_string(flips) +
-                                " quads are split along the other diagonal than in the rest (an "
-                                "exporter that triangulates each frame by its shape): the rest's "
-                                "triangles are used for every example");
-    }
-    if (examples[k].vertices == rest.vertices) {
-      say(messages.warning, exampleNames[k] + ": every vertex equals the rest's (" + restName +
-                                "): blending this example changes nothing");
-    }
-  }
-  if (options.strict) refuseSelfIntersecting(meshed.surface.triangles, examples, exampleNames);
-  advance(messages, 1);
-
+  checkExamples(rest, examples, restName, exampleNames, messages);
   ModelData model;
   model.surfaceTriangles = rest.triangles;
-  model.surfaceVertexCount = static_cast<int>(rest.vertices.rows());
   model.restSource = restName;
   model.exampleSources = exampleNames;
-  if (options.tetrise) {
-    std::vector<TetMesh> meshes = tetriseCompatible(rest, examples, exampleNames);
-    model.rest = std::move(meshes.front());
-    for (std::size_t k = 1; k < meshes.size(); ++k) model.examples.push_back(meshes[k].vertices);
-    advance(messages, exampleNames.size() + 1);
-    return model;
+  // The examples on the zipped surface's vertices.
+  std::vector<SurfaceMesh> zipped;
+  for (std::size_t k = 0; k < examples.size(); ++k) {
+    zipped.push_back({weldedPositions(welding, examples[k].vertices, exampleNames[k]),
+                      welding.surface.triangles});
   }
+  if (welding.mergedVertices > 0) {
+    say(messages.note, restName + ": " + std::to_string(welding.mergedVertices) +
+                           " vertices split along texture or normal seams are merged with their " +
+                           "copies for meshing (" + std::to_string(welding.seamEdges) +
+                           " seam edges zipped); the blended surfaces keep the input's vertices " +
+                           "and faces");
+  }
+  if (options.strict) refuseSelfIntersecting(meshed.surface.triangles, zipped, exampleNames);
+  advance(messages, 1);
+  model.surfaceVertexCount = static_cast<int>(welding.surface.vertices.rows());
+  if (welding.mergedVertices > 0) model.inputVertexRows = welding.rowOf;
   TetGenOptions tetgen;
   tetgen.maxRadiusEdgeRatio = options.radiusEdgeRatio;
   tetgen.maxTetVolume = options.maxVolume.value_or(0.0);
@@ -190,8 +240,8 @@ ModelData prepareModel(const SurfaceMesh& rest, const std::vector<SurfaceMesh>& 
   // A separated rest is embedded in the tets like a pose, before the examples.
   const std::size_t first = meshed.separated ? 1 : 0;
   std::vector<Vertices> surfaces;
-  if (meshed.separated) surfaces.push_back(rest.vertices);
-  for (const SurfaceMesh& example : examples) surfaces.push_back(example.vertices);
+  if (meshed.separated) surfaces.push_back(welding.surface.vertices);
+  for (const SurfaceMesh& example : zipped) surfaces.push_back(example.vertices);
   std::size_t placed = 0;
   CompatibleTetMeshes built = buildCompatibleTetMeshes(
       tets, model.surfaceVertexCount, surfaces, ExampleAwareOptions{}, [&](const char* stage) {

@@ -56,11 +56,25 @@ void bindModel(py::module_& m) {
           "int32 (t, 4): the tets, positively oriented, shared by the rest and every example.")
       .def_property_readonly(
           "surface_triangles", [](const Model& model) { return model.data().surfaceTriangles; },
-          "int32 (f, 3): the rest surface's triangles (indices < surface_vertex_count).")
+          "int32 (f, 3): the rest surface's triangles as the input has them: indices into\n"
+          "the input's vertices (see surface_vertex_rows).")
       .def_property_readonly(
           "surface_vertex_count",
           [](const Model& model) { return model.data().surfaceVertexCount; },
           "Number of surface vertices: the first rows of rest_vertices and of every blend.")
+      .def_property_readonly(
+          "surface_vertex_rows",
+          [](const Model& model) {
+            const ModelData& data = model.data();
+            std::vector<int> rows = data.inputVertexRows;
+            if (rows.empty()) {
+              for (int i = 0; i < data.surfaceVertexCount; ++i) rows.push_back(i);
+            }
+            return intArray(rows);
+          },
+          "int32 (u,): per input surface vertex, its row of rest_vertices and of every\n"
+          "blend; copies of a vertex split along a texture or normal seam share a row.\n"
+          "blend(w)[surface_vertex_rows] with surface_triangles is the blended surface.")
       .def_property_readonly(
           "examples", [](const Model& model) { return model.data().examples; },
           "list of float64 (n, 3): each example's vertices, in the rest's order.")

@@ -1,9 +1,9 @@
 // End to end: an open rest surface (a tube open at both ends) is prepared by
 // closing its holes with triangles between its boundary vertices; blends keep
 // the user's faces and reproduce the rest and every example at the surface.
-// --no-fill-holes refuses it as before; touching holes, and a fill through the
-// surface, are one clear error each; an example whose fill folds through the
-// tube loses tets to the exclusion.
+// --no-fill-holes refuses it as before; a texture seam is zipped; touching
+// holes, and a fill through the surface, are one clear error each; an
+// example whose fill folds through the tube loses tets to the exclusion.
 
 #include <Eigen/Geometry>
 
@@ -127,16 +127,13 @@ TEST_F(OpenRest, FillThroughTheSurfaceIsOneClearError) {
   EXPECT_NE(r.err.find("close them yourself"), std::string::npos) << r.err;
 }
 
-// A sphere cut open along its equator as a texture seam cuts it: the faces
-// of the upper half use their own copies of the equator's vertices. Both
-// holes would be filled by the same triangles; the error names the seam and
-// the remedy that works (merging the copies).
-TEST(OpenRestSeam, ASeamIsNamedWithTheMergeRemedy) {
-  const fs::path dir = scratchDir();
-  const SurfaceMesh sphere = testing_surfaces::icosphere(2);
+// `sphere` cut open along its equator as a texture seam cuts it: the faces
+// of the upper half use their own copies of the equator's vertices, which
+// follow the originals.
+SurfaceMesh cutAlongTheEquator(const SurfaceMesh& sphere) {
   SurfaceMesh seamed = sphere;
   std::vector<int> copy(static_cast<std::size_t>(sphere.vertices.rows()), -1);
-  std::vector<Eigen::RowVector3d> added;
+  std::vector<int> original;
   for (Eigen::Index f = 0; f < sphere.triangles.rows(); ++f) {
     double z = 0.0;
     for (int c = 0; c < 3; ++c) z += sphere.vertices(sphere.triangles(f, c), 2);
@@ -145,27 +142,81 @@ TEST(OpenRestSeam, ASeamIsNamedWithTheMergeRemedy) {
       const int v = sphere.triangles(f, c);
       if (std::abs(sphere.vertices(v, 2)) > 1e-12) continue;  // not on the equator
       if (copy[v] < 0) {
-        copy[v] = static_cast<int>(sphere.vertices.rows() + added.size());
-        added.push_back(sphere.vertices.row(v));
+        copy[v] = static_cast<int>(sphere.vertices.rows() + original.size());
+        original.push_back(v);
       }
       seamed.triangles(f, c) = copy[v];
     }
   }
-  ASSERT_FALSE(added.empty());
-  seamed.vertices.conservativeResize(sphere.vertices.rows() + static_cast<Eigen::Index>(added.size()), 3);
-  for (std::size_t i = 0; i < added.size(); ++i) {
-    seamed.vertices.row(sphere.vertices.rows() + static_cast<Eigen::Index>(i)) = added[i];
+  seamed.vertices.conservativeResize(
+      sphere.vertices.rows() + static_cast<Eigen::Index>(original.size()), 3);
+  for (std::size_t i = 0; i < original.size(); ++i) {
+    seamed.vertices.row(sphere.vertices.rows() + static_cast<Eigen::Index>(i)) =
+        sphere.vertices.row(original[i]);
   }
+  return seamed;
+}
+
+// Both holes of the cut sphere would be filled by the same triangles; its
+// seam is zipped instead, so it prepares, and the blends keep the copies.
+TEST(OpenRestSeam, ASeamIsZippedAndTheBlendsKeepTheCopies) {
+  const fs::path dir = scratchDir();
+  const SurfaceMesh sphere = testing_surfaces::icosphere(2);
+  const SurfaceMesh seamed = cutAlongTheEquator(sphere);
+  ASSERT_GT(seamed.vertices.rows(), sphere.vertices.rows());
+  // The example: the sphere sheared and squashed, copies moved alike.
+  Eigen::Matrix3d map;
+  map << 1.2, 0.4, 0.0, 0.0, 0.9, 0.3, 0.1, 0.0, 0.6;
+  const SurfaceMesh sheared{seamed.vertices * map.transpose(), seamed.triangles};
   writeSurface((dir / "seamed.obj").string(), seamed);
-  const std::vector<std::string> before = listDir(dir);
+  writeSurface((dir / "sheared.obj").string(), sheared);
   const RunResult r = tetblend({"prepare", (dir / "seamed.obj").string(),
-                                (dir / "seamed.obj").string(), "-o", (dir / "s.tbm").string()},
+                                (dir / "sheared.obj").string(), "-o", (dir / "s.tbm").string()},
+                               dir);
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(
+      r.err.find("seamed.obj: " + std::to_string(seamed.vertices.rows() - sphere.vertices.rows()) +
+                 " vertices split along texture or normal seams are merged"),
+      std::string::npos)
+      << r.err;
+  const std::vector<std::pair<std::string, const SurfaceMesh*>> cases = {{"0", &seamed},
+                                                                         {"1", &sheared}};
+  for (const auto& [weight, expected] : cases) {
+    SCOPED_TRACE("weight " + weight);
+    const fs::path out = dir / ("w" + weight + ".vtp");
+    const RunResult blend =
+        tetblend({"blend", (dir / "s.tbm").string(), "-w", weight, "-o", out.string()}, dir);
+    ASSERT_EQ(blend.code, 0) << blend.err;
+    const auto vtp = readVtp(out);
+    ASSERT_EQ(vtp->GetNumberOfPoints(), expected->vertices.rows());
+    EXPECT_LT(maxDistance(pointsOf(vtp), expected->vertices),
+              kInterpolationRelTol * boundingBoxDiagonal(expected->vertices));
+  }
+}
+
+// Two square sheets touching at a corner, each with its own copy of it: not
+// a seam (no edge joins the copies' neighbours), so nothing is zipped, and
+// merging the copies would pinch the surface. One line names the vertices
+// and the remedies that work.
+TEST(OpenRestSeam, HolesTouchingAtACopiedVertexAreNamed) {
+  const fs::path dir = scratchDir();
+  SurfaceMesh sheets;
+  sheets.vertices.resize(8, 3);
+  sheets.vertices << 0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0,  //
+      1, 1, 0, 2, 1, 0, 2, 2, 0, 1, 2, 0;
+  sheets.triangles.resize(4, 3);
+  sheets.triangles << 0, 1, 2, 0, 2, 3, 4, 5, 6, 4, 6, 7;
+  writeSurface((dir / "sheets.obj").string(), sheets);
+  const std::vector<std::string> before = listDir(dir);
+  const RunResult r = tetblend({"prepare", (dir / "sheets.obj").string(),
+                                (dir / "sheets.obj").string(), "-o", (dir / "s.tbm").string()},
                                dir);
   expectOneLineError(r);
-  EXPECT_NE(r.err.find("seamed.obj: vertices "), std::string::npos) << r.err;
-  EXPECT_NE(r.err.find("are at the same position and the surface is open"), std::string::npos)
+  EXPECT_NE(r.err.find("sheets.obj: vertices 2 and 4 are at the same position on the rims of its "
+                       "holes"),
+            std::string::npos)
       << r.err;
-  EXPECT_NE(r.err.find("Merge Close Vertices"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("--tetrise"), std::string::npos) << r.err;
   EXPECT_EQ(listDir(dir), before);
 }
 

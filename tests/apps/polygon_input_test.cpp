@@ -3,7 +3,9 @@
 // reader splits each quad into the same two triangles, so the example stays
 // compatible, and blends reproduce the rest and the example at the surface.
 // An example triangulated by its own shape (other quad diagonals) is the same
-// surface and prepares with a warning.
+// surface and prepares with a warning. A flat-shaded export (every quad with
+// vertices of its own, so the surface is cut along every edge) prepares with
+// its seams zipped, and the blends keep its vertices.
 
 #include <array>
 #include <cmath>
@@ -14,6 +16,7 @@
 #include "tetblend/core/constants.h"
 #include "tetblend/core/tet_geometry.h"
 #include "tetblend/meshing/procedural_shapes.h"
+#include "tetblend/meshing/surface_io.h"
 
 namespace tetblend::apps_test {
 namespace {
@@ -151,6 +154,101 @@ TEST(PolygonInput, ExampleTriangulatedByItsShapeIsAcceptedWithAWarning) {
   ASSERT_EQ(blend.code, 0) << blend.err;
   EXPECT_LT(maxDistance(pointsOf(readVtp(out)), twisted),
             kInterpolationRelTol * boundingBoxDiagonal(twisted));
+}
+
+// The bar flat-shaded, as exporters write a mesh with per-face normals:
+// quad q has vertices 4q..4q+3 of its own (copies of the shared corners),
+// written with one "f" line each.
+std::string flatShadedBarObj(const Vertices& positions) {
+  std::string out;
+  std::string faces;
+  int next = 1;
+  for (const auto& q : quadBarFaces()) {
+    Vertices corners(4, 3);
+    for (int c = 0; c < 4; ++c) corners.row(c) = positions.row(q[c] - 1);
+    out += objVertices(corners);
+    faces += "f " + std::to_string(next) + ' ' + std::to_string(next + 1) + ' ' +
+             std::to_string(next + 2) + ' ' + std::to_string(next + 3) + '\n';
+    next += 4;
+  }
+  return out + faces;
+}
+
+// The flat-shaded bar's vertices, in its file's order.
+Vertices flatShadedPositions(const Vertices& positions) {
+  const auto quads = quadBarFaces();
+  Vertices result(4 * static_cast<Eigen::Index>(quads.size()), 3);
+  for (std::size_t i = 0; i < quads.size(); ++i) {
+    for (int c = 0; c < 4; ++c) {
+      result.row(4 * static_cast<Eigen::Index>(i) + c) = positions.row(quads[i][c] - 1);
+    }
+  }
+  return result;
+}
+
+TEST(PolygonInput, FlatShadedRestAndExamplePrepareWithTheirSeamsZipped) {
+  const fs::path dir = scratchDir();
+  const Vertices rest = quadBarPositions();
+  const Vertices twisted =
+      twistAboutAxis(rest, Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitZ(), 1.5 * kPi, 4.0);
+  std::ofstream(dir / "rest.obj") << flatShadedBarObj(rest);
+  std::ofstream(dir / "twist.obj") << flatShadedBarObj(twisted);
+  const fs::path model = dir / "bar.tbm";
+  const RunResult r = tetblend(
+      {"prepare", (dir / "rest.obj").string(), (dir / "twist.obj").string(), "-o", model.string()},
+      dir);
+  ASSERT_EQ(r.code, 0) << r.err;
+  const Eigen::Index inputVertices = 4 * (4 * kLayers + 2);
+  const Eigen::Index corners = rest.rows();
+  EXPECT_NE(r.err.find("rest.obj: " + std::to_string(inputVertices - corners) +
+                       " vertices split along texture or normal seams are merged"),
+            std::string::npos)
+      << r.err;
+  EXPECT_EQ(r.err.find("warning"), std::string::npos) << r.err;
+  const std::vector<std::pair<std::string, Vertices>> cases = {{"0", flatShadedPositions(rest)},
+                                                               {"1", flatShadedPositions(twisted)}};
+  for (const auto& [weight, expected] : cases) {
+    SCOPED_TRACE("weight " + weight);
+    const fs::path out = dir / ("w" + weight + ".vtu");
+    const RunResult blend = tetblend(
+        {"blend", model.string(), "-w", weight, "-o", out.string(), "--surface-format", "obj"},
+        dir);
+    ASSERT_EQ(blend.code, 0) << blend.err;
+    // The tets share the zipped corners; the surfaces keep the input's copies.
+    const auto vtp = readVtp(fs::path(out).replace_extension(".vtp"));
+    EXPECT_EQ(vtp->GetNumberOfPolys(), 2 * (4 * kLayers + 2));
+    ASSERT_EQ(vtp->GetNumberOfPoints(), inputVertices);
+    EXPECT_LT(maxDistance(pointsOf(vtp), expected),
+              kInterpolationRelTol * boundingBoxDiagonal(expected));
+    const SurfaceMesh obj = readSurface(fs::path(out).replace_extension(".obj").string());
+    ASSERT_EQ(obj.vertices.rows(), inputVertices);
+    EXPECT_LT(maxDistance(obj.vertices, expected),
+              kInterpolationRelTol * boundingBoxDiagonal(expected));
+  }
+  const RunResult inspect = tetblend({"inspect", model.string()}, dir);
+  ASSERT_EQ(inspect.code, 0) << inspect.err;
+  EXPECT_NE(inspect.out.find("input surface: " + std::to_string(inputVertices) + " vertices"),
+            std::string::npos)
+      << inspect.out;
+}
+
+// An example in which one copy of a seam vertex moves away from the others:
+// its surface is cut open there, so it cannot share the rest's tets.
+TEST(PolygonInput, ExampleWhoseSeamOpensIsRefusedInOneLine) {
+  const fs::path dir = scratchDir();
+  const Vertices rest = quadBarPositions();
+  std::ofstream(dir / "rest.obj") << flatShadedBarObj(rest);
+  std::string opened = flatShadedBarObj(rest);
+  opened.replace(0, opened.find('\n'), "v 5 5 5");  // input vertex 0 alone
+  std::ofstream(dir / "opened.obj") << opened;
+  const RunResult r = tetblend({"prepare", (dir / "rest.obj").string(),
+                                (dir / "opened.obj").string(), "-o", (dir / "m.tbm").string()},
+                               dir);
+  EXPECT_NE(r.code, 0);
+  expectOneLineError(r);
+  EXPECT_NE(r.err.find("opened.obj: vertices 0 and "), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("a seam must stay closed in every example"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(dir / "m.tbm"));
 }
 
 }  // namespace

@@ -1,5 +1,5 @@
 // The model file (pipeline/model_file.h): exact round trips, the hash, the
-// version 1 layout.
+// version 1 and 2 layouts.
 
 #include "tetblend/pipeline/model_file.h"
 
@@ -64,33 +64,68 @@ void putLittle(std::vector<unsigned char>& bytes, std::size_t at, std::uint64_t 
   for (int i = 0; i < count; ++i) bytes[at + i] = static_cast<unsigned char>(value >> (8 * i));
 }
 
-TEST(ModelFile, ExcludedTetsRoundTripAndVersionOneStillReads) {
+// Rewrites the model file at `path` as format `version`: its payload without
+// the last `dropped` bytes (the lists later versions appended, empty here),
+// header and hash adjusted by hand after the layout in model_file.h.
+void rewriteAsVersion(const std::string& path, std::uint32_t version, std::size_t dropped) {
+  std::vector<unsigned char> bytes = fileBytes(path);
+  constexpr std::size_t kHeader = 8 + 4 + 8, kHash = 8;
+  const std::size_t payload = bytes.size() - kHeader - kHash - dropped;
+  bytes.resize(kHeader + payload + kHash);
+  putLittle(bytes, 8, version, 4);
+  putLittle(bytes, 12, payload, 8);
+  putLittle(bytes, kHeader + payload, fnv1a64(bytes.data() + kHeader, payload), 8);
+  writeBytes(path, bytes);
+}
+
+// Each list a version added is an u64 count followed by its entries.
+constexpr std::size_t kEmptyListBytes = 8;
+
+TEST(ModelFile, ExcludedTetsRoundTripAndVersionsOneAndTwoStillRead) {
   ModelData m = oneTetModel();
   m.excludedTets = {0};
   const std::string path = (std::filesystem::path(::testing::TempDir()) / "excluded.tbm").string();
   writeModelFile(path, m);
   EXPECT_EQ(readModelFile(path).excludedTets, m.excludedTets);
 
-  // Version 1 (before excluded tets): the version 2 payload without its
-  // trailing excluded-tet list (u64 count 0), header and hash adjusted by
-  // hand after the layout in model_file.h.
+  // Version 2 (before input vertex rows) and version 1 (before excluded tets).
   m.excludedTets.clear();
-  writeModelFile(path, m);
-  std::vector<unsigned char> bytes = fileBytes(path);
-  constexpr std::size_t kHeader = 8 + 4 + 8, kHash = 8, kExcludedCount = 8;
-  const std::size_t payload = bytes.size() - kHeader - kHash - kExcludedCount;
-  std::vector<unsigned char> v1(bytes.begin(), bytes.begin() + kHeader + payload);
-  putLittle(v1, 8, 1, 4);
-  putLittle(v1, 12, payload, 8);
-  v1.resize(v1.size() + kHash);
-  putLittle(v1, kHeader + payload, fnv1a64(v1.data() + kHeader, payload), 8);
-  writeBytes(path, v1);
-  const ModelData r = readModelFile(path);
-  EXPECT_TRUE(r.excludedTets.empty());
-  EXPECT_EQ(r.examples[0], m.examples[0]);
+  for (const std::uint32_t version : {2u, 1u}) {
+    writeModelFile(path, m);
+    rewriteAsVersion(path, version, (kModelFormatVersion - version) * kEmptyListBytes);
+    const ModelData r = readModelFile(path);
+    EXPECT_TRUE(r.excludedTets.empty()) << version;
+    EXPECT_TRUE(r.inputVertexRows.empty()) << version;
+    EXPECT_EQ(r.examples[0], m.examples[0]) << version;
+  }
 
   // Excluded tets out of range or out of order are refused when writing.
   m.excludedTets = {1};
+  EXPECT_THROW(writeModelFile(path, m), InputError);
+}
+
+// A rest exported with a seam: input vertices 4 and 5 are copies of surface
+// vertices 1 and 2, and the input's faces use them.
+TEST(ModelFile, InputVertexRowsRoundTripAndGiveTheInputsVertices) {
+  ModelData m = oneTetModel();
+  m.inputVertexRows = {0, 1, 2, 3, 1, 2};
+  m.surfaceTriangles << 0, 5, 4;
+  const std::string path = (std::filesystem::path(::testing::TempDir()) / "rows.tbm").string();
+  writeModelFile(path, m);
+  const ModelData r = readModelFile(path);
+  EXPECT_EQ(r.inputVertexRows, m.inputVertexRows);
+  EXPECT_EQ(r.surfaceTriangles, m.surfaceTriangles);
+  EXPECT_EQ(r.inputVertexCount(), 6);
+  const Vertices input = r.inputVertices(r.examples[0]);
+  ASSERT_EQ(input.rows(), 6);
+  for (int i = 0; i < 6; ++i) {
+    EXPECT_TRUE(input.row(i) == r.examples[0].row(m.inputVertexRows[i])) << i;
+  }
+  EXPECT_TRUE(oneTetModel().inputVertices(r.examples[0]) == r.examples[0]);
+
+  m.inputVertexRows[4] = 4;  // not a surface vertex (there are 4)
+  EXPECT_THROW(writeModelFile(path, m), InputError);
+  m.inputVertexRows = {0, 1, 2, 3, 1};  // a triangle then refers to input vertex 5 of 5
   EXPECT_THROW(writeModelFile(path, m), InputError);
 }
 

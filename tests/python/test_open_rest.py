@@ -49,3 +49,28 @@ def test_fill_holes_false_refuses_an_open_rest():
     rest, triangles = open_tube()
     with pytest.raises(tetblend.InputError, match="boundary edge.*let prepare fill the holes"):
         tetblend.prepare(rest, triangles, [sheared(rest)], fill_holes=False)
+
+
+def test_a_uv_seam_is_zipped_and_surface_vertex_rows_give_the_inputs_vertices():
+    """The tube as a texture seam cuts it: the faces closing each ring use
+    copies of its first column's vertices (appended after the originals)."""
+    rest, triangles = open_tube()
+    rings = len(rest) // SEGMENTS
+    first_column = np.arange(rings) * SEGMENTS
+    copy_of = {int(v): len(rest) + k for k, v in enumerate(first_column)}
+    seamed_triangles = triangles.copy()
+    for f, face in enumerate(triangles):
+        if (face % SEGMENTS == SEGMENTS - 1).any():  # the faces that wrap around
+            seamed_triangles[f] = [copy_of.get(int(v), v) for v in face]
+    seamed = np.vstack([rest, rest[first_column]])
+    example = sheared(seamed)
+    model = tetblend.prepare(seamed, seamed_triangles, [example])
+    assert model.surface_vertex_count == len(rest)
+    assert np.array_equal(model.surface_triangles, seamed_triangles)
+    rows = model.surface_vertex_rows
+    assert rows.dtype == np.int32 and len(rows) == len(seamed)
+    assert np.array_equal(rows[len(rest):], first_column)
+    diagonal = np.linalg.norm(rest.max(axis=0) - rest.min(axis=0))
+    for weights, expected in (([0.0], seamed), ([1.0], example)):
+        blended = model.blend(weights)[rows]
+        assert np.abs(blended - expected).max() < INTERPOLATION_REL_TOL * diagonal

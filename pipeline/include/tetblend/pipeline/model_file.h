@@ -13,7 +13,9 @@
 //             rest vertices (#V*3 f64), tets (#T*4 i32), surface triangles
 //             (#F*3 i32); per example: vertices (#V*3 f64);
 //             rest source name, then one per example (u64 length + bytes);
-//             version 2 on: u64 #X excluded tets, then #X i32 tet indices
+//             version 2 on: u64 #X excluded tets, then #X i32 tet indices;
+//             version 3 on: u64 #U input vertices (0: the surface vertices
+//             are the input's), then #U i32 rows (ModelData::inputVertexRows)
 //   u64       FNV-1a 64 hash of the payload bytes
 // A file with another magic, another version, a wrong size or a wrong hash is
 // refused with an InputError that says which and what to do.
@@ -28,13 +30,15 @@
 namespace tetblend {
 
 /// Version of the layout above; bump on any change of the payload. Version 1
-/// files (no excluded tets) are still read.
-constexpr std::uint32_t kModelFormatVersion = 2;
+/// and 2 files (no excluded tets; no input vertex rows) are still read.
+constexpr std::uint32_t kModelFormatVersion = 3;
 
 /// What a model file holds.
 struct ModelData {
   TetMesh rest;                             ///< rest tet mesh; surface vertices first
-  Triangles surfaceTriangles;               ///< rest surface faces, indices < surfaceVertexCount
+  /// The rest surface's faces as the input has them: indices into the
+  /// input's vertices (inputVertexCount()).
+  Triangles surfaceTriangles;
   int surfaceVertexCount = 0;               ///< the first rows of rest.vertices are the surface's
   std::vector<Vertices> examples;           ///< per example, #V by 3 positions (rest order)
   std::string restSource;                   ///< file the rest surface came from
@@ -42,6 +46,17 @@ struct ModelData {
   /// Tets (ascending, distinct) that some example inverts because its surface
   /// folds or intersects itself: left out of the stitch energy of every blend.
   std::vector<int> excludedTets;
+  /// Per input surface vertex, its row of rest.vertices (and of every
+  /// blend): copies of a vertex split along a texture or normal seam share
+  /// one row (seam_welding.h). Empty when the input's vertices are the
+  /// surface vertices themselves (row i is input vertex i).
+  std::vector<int> inputVertexRows;
+
+  /// Vertices of the input surface (and of every blended surface written).
+  Eigen::Index inputVertexCount() const;
+  /// Rows `positions` (one per rest vertex) at the input's vertices: the
+  /// blended surface's vertices, in the input's order, for surfaceTriangles.
+  Vertices inputVertices(const Vertices& positions) const;
 };
 
 /// FNV-1a 64-bit hash of `size` bytes, continuing from `hash`.

@@ -1,0 +1,46 @@
+#pragma once
+// Closing the seams of a surface exported with split vertices: exporters
+// duplicate a vertex wherever its texture coordinate or normal jumps (UV
+// seams, flat-shaded and sharp edges), so the surface is cut open along
+// those edges although both sides meet. Where exactly two boundary edges
+// join the same two positions, they are zipped: their vertices are merged.
+// Their faces may run them either way (a flat-shaded export orients each
+// facet on its own; the meshing orients the zipped surface consistently).
+// Only such pairs are merged, so two parts that merely touch at a point, a
+// fin of three sheets, or a hole's rim stay apart. Positions are compared
+// exactly (the copies of a seam vertex are written from one value).
+
+#include <string>
+#include <vector>
+
+#include "tetblend/core/mesh_types.h"
+
+namespace tetblend {
+
+/// A surface with its seams zipped, and where each input vertex went.
+struct SeamWelding {
+  /// The merged surface: of each group of merged vertices the one with the
+  /// smallest index, in input order; the input's faces, renumbered.
+  SurfaceMesh surface;
+  /// Per input vertex, its row in surface.vertices (0, 1, 2, ... when
+  /// nothing was merged).
+  std::vector<int> rowOf;
+  /// Input vertices merged into one with a smaller index.
+  int mergedVertices = 0;
+  /// Pairs of boundary edges zipped together.
+  int seamEdges = 0;
+};
+
+/// Zips the seams of `surface` as described above. A surface with non-finite
+/// coordinates, or one whose zipping would collapse a face, is returned as it
+/// is (nothing merged), for the validation to name its problem.
+SeamWelding weldSeams(const SurfaceMesh& surface);
+
+/// `positions` (one row per input vertex, e.g. an example of the surface
+/// `welding` was made from) on the merged surface's rows. Throws InputError
+/// naming `sourceName` and two merged vertices whose positions here differ:
+/// a seam that opens in an example cannot share the rest's tets.
+Vertices weldedPositions(const SeamWelding& welding, const Vertices& positions,
+                         const std::string& sourceName);
+
+}  // namespace tetblend

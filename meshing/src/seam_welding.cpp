@@ -1,0 +1,156 @@
+#include "tetblend/meshing/seam_welding.h"
+
+#include <algorithm>
+#include <array>
+#include <tuple>
+
+#include "half_edge_table.h"
+#include "surface_messages.h"
+#include "tetblend/core/error.h"
+
+namespace tetblend {
+namespace {
+
+using detail::HalfEdge;
+
+// Per vertex, the same number for vertices at exactly the same position
+// (0.0 and -0.0 are one position).
+std::vector<int> positionIds(const Vertices& vertices) {
+  std::vector<int> order(static_cast<std::size_t>(vertices.rows()));
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = static_cast<int>(i);
+  const auto position = [&](int v) {
+    return std::array<double, 3>{vertices(v, 0), vertices(v, 1), vertices(v, 2)};
+  };
+  std::sort(order.begin(), order.end(), [&](int a, int b) { return position(a) < position(b); });
+  std::vector<int> id(order.size());
+  int next = -1;
+  for (std::size_t i = 0; i < order.size(); ++i) {
+    if (i == 0 || position(order[i]) != position(order[i - 1])) ++next;
+    id[static_cast<std::size_t>(order[i])] = next;
+  }
+  return id;
+}
+
+// A boundary edge between the vertices `low` and `high`, keyed by their
+// positions (lowPosition < highPosition).
+struct BoundaryEdge {
+  int lowPosition;
+  int highPosition;
+  int low;
+  int high;
+};
+
+bool byPositions(const BoundaryEdge& a, const BoundaryEdge& b) {
+  return std::tie(a.lowPosition, a.highPosition) < std::tie(b.lowPosition, b.highPosition);
+}
+
+// The boundary edges of `triangles` but those between two vertices at one
+// position, sorted by their positions.
+std::vector<BoundaryEdge> boundaryEdges(const Triangles& triangles, const std::vector<int>& id) {
+  const detail::HalfEdgeTable table =
+      detail::buildHalfEdgeTable(triangles, std::vector<char>(triangles.rows(), 0));
+  std::vector<BoundaryEdge> result;
+  for (const auto& [begin, end] : table.edges) {
+    if (end - begin != 1) continue;
+    int a = table.halfEdges[begin].lo, b = table.halfEdges[begin].hi;
+    if (id[static_cast<std::size_t>(a)] == id[static_cast<std::size_t>(b)]) continue;
+    if (id[static_cast<std::size_t>(a)] > id[static_cast<std::size_t>(b)]) std::swap(a, b);
+    result.push_back({id[static_cast<std::size_t>(a)], id[static_cast<std::size_t>(b)], a, b});
+  }
+  std::sort(result.begin(), result.end(), byPositions);
+  return result;
+}
+
+SeamWelding unchanged(const SurfaceMesh& surface) {
+  SeamWelding welding;
+  welding.surface = surface;
+  welding.rowOf.resize(static_cast<std::size_t>(surface.vertices.rows()));
+  for (std::size_t v = 0; v < welding.rowOf.size(); ++v) welding.rowOf[v] = static_cast<int>(v);
+  return welding;
+}
+
+}  // namespace
+
+SeamWelding weldSeams(const SurfaceMesh& surface) {
+  if (!surface.vertices.allFinite()) return unchanged(surface);
+  const std::vector<int> id = positionIds(surface.vertices);
+  const std::vector<BoundaryEdge> edges = boundaryEdges(surface.triangles, id);
+  detail::UnionFind groups(static_cast<std::size_t>(surface.vertices.rows()));
+  int seamEdges = 0;
+  // Exactly two boundary edges between the same two positions are the two
+  // sides of a seam, whichever way their faces run them (orientation is
+  // made consistent later); one, or three and more, are not.
+  for (std::size_t i = 0; i < edges.size();) {
+    std::size_t end = i + 1;
+    while (end < edges.size() && !byPositions(edges[i], edges[end])) ++end;
+    if (end - i == 2) {
+      groups.unite(static_cast<std::size_t>(edges[i].low),
+                   static_cast<std::size_t>(edges[i + 1].low));
+      groups.unite(static_cast<std::size_t>(edges[i].high),
+                   static_cast<std::size_t>(edges[i + 1].high));
+      ++seamEdges;
+    }
+    i = end;
+  }
+  if (seamEdges == 0) return unchanged(surface);
+
+  SeamWelding welding;
+  welding.seamEdges = seamEdges;
+  welding.rowOf.resize(static_cast<std::size_t>(surface.vertices.rows()));
+  std::vector<int> kept;
+  for (std::size_t v = 0; v < welding.rowOf.size(); ++v) {
+    const std::size_t root = groups.find(v);
+    if (root == v) {
+      welding.rowOf[v] = static_cast<int>(kept.size());
+      kept.push_back(static_cast<int>(v));
+    } else {
+      welding.rowOf[v] = welding.rowOf[root];  // root < v: already numbered
+    }
+  }
+  welding.mergedVertices = static_cast<int>(welding.rowOf.size() - kept.size());
+  welding.surface.vertices.resize(static_cast<Eigen::Index>(kept.size()), 3);
+  for (std::size_t r = 0; r < kept.size(); ++r) {
+    welding.surface.vertices.row(static_cast<Eigen::Index>(r)) = surface.vertices.row(kept[r]);
+  }
+  welding.surface.triangles.resize(surface.triangles.rows(), 3);
+  for (Eigen::Index f = 0; f < surface.triangles.rows(); ++f) {
+    for (int c = 0; c < 3; ++c) {
+      welding.surface.triangles(f, c) =
+          welding.rowOf[static_cast<std::size_t>(surface.triangles(f, c))];
+    }
+    const auto t = welding.surface.triangles.row(f);
+    if (t(0) == t(1) || t(1) == t(2) || t(0) == t(2)) return unchanged(surface);
+  }
+  return welding;
+}
+
+Vertices weldedPositions(const SeamWelding& welding, const Vertices& positions,
+                         const std::string& sourceName) {
+  if (positions.rows() != static_cast<Eigen::Index>(welding.rowOf.size())) {
+    throw InputError(sourceName + ": " + std::to_string(positions.rows()) +
+                     " vertices, the rest has " + std::to_string(welding.rowOf.size()));
+  }
+  Vertices result(welding.surface.vertices.rows(), 3);
+  std::vector<int> first(static_cast<std::size_t>(result.rows()), -1);
+  for (std::size_t v = 0; v < welding.rowOf.size(); ++v) {
+    const int row = welding.rowOf[v];
+    const auto at = positions.row(static_cast<Eigen::Index>(v));
+    int& firstOfRow = first[static_cast<std::size_t>(row)];
+    if (firstOfRow < 0) {
+      firstOfRow = static_cast<int>(v);
+      result.row(row) = at;
+    } else if (at != result.row(row)) {
+      throw InputError(sourceName + ": vertices " + std::to_string(firstOfRow) + " and " +
+                       std::to_string(v) +
+                       " lie on one seam of the rest (same position there) but differ here "
+                       "by " +
+                       detail::numberText((at - result.row(row)).norm()) +
+                       ": a seam must stay closed in every example; export the examples "
+                       "from the same mesh as the rest, or merge the seam vertices in all of "
+                       "them alike");
+    }
+  }
+  return result;
+}
+
+}  // namespace tetblend
