@@ -19,6 +19,7 @@
 #include "tetblend/meshing/surface_validation.h"
 #include "tetblend/meshing/tet_boundary.h"
 #include "tetblend/meshing/tetgen_mesher.h"
+#include "test_surfaces.h"
 
 namespace tetblend {
 namespace {
@@ -127,6 +128,34 @@ TEST(ExampleAwareTets, NoRoundsMeansPlacementOnly) {
       buildCompatibleTetMeshes(bar.rest, surfaceCount, {bar.twisted}, options);
   EXPECT_EQ(built.steinerPoints, 0);
   EXPECT_FALSE(built.examples[0].invertedTets.empty());
+}
+
+// A rest of two parts: the bar, with interior vertices, and a small
+// tetrahedron, one tet between its four surface vertices. The example turns
+// the tetrahedron inside out (mirrored: its surface stays free of
+// intersections) and keeps the bar. Nothing can repair that tet: no interior
+// vertex of its part exists, and all its edges and faces are on the surface.
+// The untangler's growing region stops at the tetrahedron's part, so it must
+// stop growing there too (it used to double its ring count past the int range
+// and then retry the same empty region forever).
+TEST(ExampleAwareTets, AnUnrepairableTetInAPartWithoutInteriorEndsThePlacement) {
+  const AllSurfaceBar bar = allSurfaceBar();
+  SurfaceMesh tetrahedron;
+  tetrahedron.vertices.resize(4, 3);
+  tetrahedron.vertices << 10, 0, 0, 11, 0, 0, 10, 1, 0, 10, 0, 1;
+  tetrahedron.triangles.resize(4, 3);
+  tetrahedron.triangles << 0, 2, 1, 0, 1, 3, 0, 3, 2, 1, 2, 3;
+  const SurfaceMesh surface = testing_surfaces::join(bar.surface, tetrahedron);
+  const TetMesh rest = tetrahedralize(surface);
+  const int surfaceCount = static_cast<int>(surface.vertices.rows());
+  ASSERT_GT(rest.vertices.rows(), surfaceCount);  // the bar has interior vertices
+  Vertices mirrored = surface.vertices;
+  mirrored.bottomRows(4).col(0) = 21.0 - mirrored.bottomRows(4).col(0).array();
+  ASSERT_EQ(findSelfIntersections(mirrored, surface.triangles, 1).pairCount, 0u);
+  const CompatibleTetMeshes built = buildCompatibleTetMeshes(rest, surfaceCount, {mirrored});
+  const std::vector<int>& inverted = built.examples[0].invertedTets;
+  ASSERT_EQ(inverted.size(), 1u);
+  EXPECT_GE(built.rest.tets.row(inverted[0]).minCoeff(), surfaceCount - 4);  // the tetrahedron's
 }
 
 // Examples are placed several at once when there are threads for it; the
