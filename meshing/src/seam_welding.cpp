@@ -11,8 +11,6 @@
 namespace tetblend {
 namespace {
 
-using detail::HalfEdge;
-
 // Per vertex, the same number for vertices at exactly the same position
 // (0.0 and -0.0 are one position).
 std::vector<int> positionIds(const Vertices& vertices) {
@@ -72,7 +70,10 @@ SeamWelding unchanged(const SurfaceMesh& surface) {
 }  // namespace
 
 SeamWelding weldSeams(const SurfaceMesh& surface) {
-  if (!surface.vertices.allFinite()) return unchanged(surface);
+  const bool indicesInRange =
+      surface.triangles.size() == 0 ||
+      (surface.triangles.minCoeff() >= 0 && surface.triangles.maxCoeff() < surface.vertices.rows());
+  if (!surface.vertices.allFinite() || !indicesInRange) return unchanged(surface);
   const std::vector<int> id = positionIds(surface.vertices);
   const std::vector<BoundaryEdge> edges = boundaryEdges(surface.triangles, id);
   detail::UnionFind groups(static_cast<std::size_t>(surface.vertices.rows()));

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <limits>
 #include <vector>
 
 #include "tetblend/core/error.h"
@@ -130,6 +131,19 @@ TEST(SeamWelding, AnEdgePositionSharedByThreeBoundaryEdgesIsNotZipped) {
   EXPECT_EQ(zipped.seamEdges, 1);
   EXPECT_EQ(zipped.rowOf[7], zipped.rowOf[0]);
   EXPECT_EQ(zipped.rowOf[4], zipped.rowOf[3]);
+}
+
+// Input the validation refuses later is left for it to name.
+TEST(SeamWelding, BadInputIsLeftAsItIs) {
+  SurfaceMesh outOfRange = facetedCube();
+  outOfRange.triangles(3, 1) = 24;
+  EXPECT_EQ(weldSeams(outOfRange).mergedVertices, 0);
+  outOfRange.triangles(3, 1) = -1;
+  EXPECT_EQ(weldSeams(outOfRange).mergedVertices, 0);
+  SurfaceMesh notFinite = facetedCube();
+  notFinite.vertices(5, 2) = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_EQ(weldSeams(notFinite).mergedVertices, 0);
+  EXPECT_TRUE(weldSeams(notFinite).surface.triangles == notFinite.triangles);
 }
 
 TEST(SeamWelding, ExamplesAreMovedToTheMergedRowsAndAnOpenedSeamIsRefused) {

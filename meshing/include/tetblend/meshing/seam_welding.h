@@ -32,8 +32,9 @@ struct SeamWelding {
 };
 
 /// Zips the seams of `surface` as described above. A surface with non-finite
-/// coordinates, or one whose zipping would collapse a face, is returned as it
-/// is (nothing merged), for the validation to name its problem.
+/// coordinates or a face index out of range, or one whose zipping would
+/// collapse a face, is returned as it is (nothing merged), for the
+/// validation to name its problem.
 SeamWelding weldSeams(const SurfaceMesh& surface);
 
 /// `positions` (one row per input vertex, e.g. an example of the surface
