@@ -11,24 +11,6 @@
 namespace tetblend {
 namespace {
 
-// Per vertex, the same number for vertices at exactly the same position
-// (0.0 and -0.0 are one position).
-std::vector<int> positionIds(const Vertices& vertices) {
-  std::vector<int> order(static_cast<std::size_t>(vertices.rows()));
-  for (std::size_t i = 0; i < order.size(); ++i) order[i] = static_cast<int>(i);
-  const auto position = [&](int v) {
-    return std::array<double, 3>{vertices(v, 0), vertices(v, 1), vertices(v, 2)};
-  };
-  std::sort(order.begin(), order.end(), [&](int a, int b) { return position(a) < position(b); });
-  std::vector<int> id(order.size());
-  int next = -1;
-  for (std::size_t i = 0; i < order.size(); ++i) {
-    if (i == 0 || position(order[i]) != position(order[i - 1])) ++next;
-    id[static_cast<std::size_t>(order[i])] = next;
-  }
-  return id;
-}
-
 // A boundary edge between the vertices `low` and `high`, keyed by their
 // positions (lowPosition < highPosition).
 struct BoundaryEdge {
@@ -68,6 +50,22 @@ SeamWelding unchanged(const SurfaceMesh& surface) {
 }
 
 }  // namespace
+
+std::vector<int> positionIds(const Vertices& vertices) {
+  std::vector<int> order(static_cast<std::size_t>(vertices.rows()));
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = static_cast<int>(i);
+  const auto position = [&](int v) {
+    return std::array<double, 3>{vertices(v, 0), vertices(v, 1), vertices(v, 2)};
+  };
+  std::sort(order.begin(), order.end(), [&](int a, int b) { return position(a) < position(b); });
+  std::vector<int> id(order.size());
+  int next = -1;
+  for (std::size_t i = 0; i < order.size(); ++i) {
+    if (i == 0 || position(order[i]) != position(order[i - 1])) ++next;
+    id[static_cast<std::size_t>(order[i])] = next;
+  }
+  return id;
+}
 
 SeamWelding weldSeams(const SurfaceMesh& surface) {
   const bool indicesInRange =

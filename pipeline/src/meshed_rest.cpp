@@ -1,11 +1,10 @@
 #include "meshed_rest.h"
 
 #include <algorithm>
-#include <array>
-#include <cmath>
 #include <limits>
 
 #include "tetblend/core/error.h"
+#include "tetblend/meshing/seam_welding.h"
 #include "tetblend/meshing/self_intersection.h"
 #include "tetblend/meshing/surface_orientation.h"
 #include "tetblend/meshing/surface_separation.h"
@@ -40,21 +39,18 @@ SurfaceMesh closedSurface(const SurfaceMesh& oriented, const std::string& restNa
 // Two vertices at the same position, the smallest such pair of indices, or
 // (-1, -1): how a surface cut open along a texture or normal seam looks.
 std::pair<int, int> coincidentVertices(const Vertices& vertices) {
-  std::vector<int> order(static_cast<std::size_t>(vertices.rows()));
-  for (std::size_t i = 0; i < order.size(); ++i) order[i] = static_cast<int>(i);
-  const auto position = [&](int v) {
-    return std::array<double, 3>{vertices(v, 0), vertices(v, 1), vertices(v, 2)};
-  };
-  std::sort(order.begin(), order.end(), [&](int a, int b) {
-    return std::make_pair(position(a), a) < std::make_pair(position(b), b);
-  });
-  std::pair<int, int> first{-1, -1};
-  for (std::size_t i = 1; i < order.size(); ++i) {
-    if (position(order[i]) != position(order[i - 1])) continue;
-    const std::pair<int, int> pair{order[i - 1], order[i]};
-    if (first.first < 0 || pair < first) first = pair;
+  const std::vector<int> id = positionIds(vertices);
+  std::vector<int> firstAt(id.size(), -1);  // per position, its smallest vertex
+  std::pair<int, int> smallest{-1, -1};
+  for (int v = 0; v < static_cast<int>(id.size()); ++v) {
+    int& first = firstAt[static_cast<std::size_t>(id[static_cast<std::size_t>(v)])];
+    if (first < 0) {
+      first = v;
+    } else if (smallest.first < 0 || std::make_pair(first, v) < smallest) {
+      smallest = {first, v};
+    }
   }
-  return first;
+  return smallest;
 }
 
 // An open surface with two vertices at one position after its seams were

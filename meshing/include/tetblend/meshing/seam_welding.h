@@ -31,6 +31,11 @@ struct SeamWelding {
   int seamEdges = 0;
 };
 
+/// Per vertex of `vertices` (finite), a number shared exactly by the vertices
+/// at the same position (0.0 and -0.0 are one position): 0, 1, 2, ... in
+/// the lexicographic order of the positions.
+std::vector<int> positionIds(const Vertices& vertices);
+
 /// Zips the seams of `surface` as described above. A surface with non-finite
 /// coordinates or a face index out of range, or one whose zipping would
 /// collapse a face, is returned as it is (nothing merged), for the
