@@ -156,24 +156,6 @@ TEST(PolygonInput, ExampleTriangulatedByItsShapeIsAcceptedWithAWarning) {
             kInterpolationRelTol * boundingBoxDiagonal(twisted));
 }
 
-// The bar flat-shaded, as exporters write a mesh with per-face normals:
-// quad q has vertices 4q..4q+3 of its own (copies of the shared corners),
-// written with one "f" line each.
-std::string flatShadedBarObj(const Vertices& positions) {
-  std::string out;
-  std::string faces;
-  int next = 1;
-  for (const auto& q : quadBarFaces()) {
-    Vertices corners(4, 3);
-    for (int c = 0; c < 4; ++c) corners.row(c) = positions.row(q[c] - 1);
-    out += objVertices(corners);
-    faces += "f " + std::to_string(next) + ' ' + std::to_string(next + 1) + ' ' +
-             std::to_string(next + 2) + ' ' + std::to_string(next + 3) + '\n';
-    next += 4;
-  }
-  return out + faces;
-}
-
 // The flat-shaded bar's vertices, in its file's order.
 Vertices flatShadedPositions(const Vertices& positions) {
   const auto quads = quadBarFaces();
@@ -184,6 +166,18 @@ Vertices flatShadedPositions(const Vertices& positions) {
     }
   }
   return result;
+}
+
+// The bar flat-shaded, as exporters write a mesh with per-face normals:
+// quad q has vertices 4q..4q+3 of its own (copies of the shared corners),
+// written with one "f" line each.
+std::string flatShadedBarObj(const Vertices& positions) {
+  std::string out = objVertices(flatShadedPositions(positions));
+  for (int first = 1; first <= 4 * static_cast<int>(quadBarFaces().size()); first += 4) {
+    out += "f " + std::to_string(first) + ' ' + std::to_string(first + 1) + ' ' +
+           std::to_string(first + 2) + ' ' + std::to_string(first + 3) + '\n';
+  }
+  return out;
 }
 
 TEST(PolygonInput, FlatShadedRestAndExamplePrepareWithTheirSeamsZipped) {
