@@ -60,8 +60,11 @@ void repairModelFields(std::string& bytes) {
     return;
   }
   const std::uint64_t payloadSize = bytes.size() - kHeader - kTrailer;
-  const std::uint64_t hash =
-      fnv1a64(reinterpret_cast<const unsigned char*>(bytes.data() + kHeader), payloadSize);
+  std::uint32_t version = 0;
+  for (int i = 0; i < 4; ++i)
+    version |= static_cast<std::uint32_t>(static_cast<unsigned char>(bytes[8 + i])) << (8 * i);
+  const std::uint64_t hash = modelChecksum(
+      reinterpret_cast<const unsigned char*>(bytes.data() + kHeader), payloadSize, version);
   for (int i = 0; i < 8; ++i) {
     bytes[12 + i] = static_cast<char>((payloadSize >> (8 * i)) & 0xff);
     bytes[kHeader + payloadSize + i] = static_cast<char>((hash >> (8 * i)) & 0xff);

@@ -212,8 +212,9 @@ def medit_seeds():
 
 
 def model_bytes(version, vertices, tets, triangles, surface_count, examples, names, excluded,
-                counts=None, input_rows=()):
-    """A model file (apps/src/model_file.h); `counts` overrides the 5 header counts."""
+                counts=None, input_rows=(), cache=None):
+    """A model file (pipeline/include/tetblend/pipeline/model_file.h); `counts` overrides the 5
+    header counts; `cache` is the version 4 blend cache's payload bytes (cache_bytes)."""
     payload = struct.pack("<5Q", *(counts or (len(vertices), len(tets), len(triangles),
                                               surface_count, len(examples))))
     payload += b"".join(struct.pack("<3d", *v) for v in vertices)
@@ -228,11 +229,30 @@ def model_bytes(version, vertices, tets, triangles, surface_count, examples, nam
     if version >= 3:
         payload += struct.pack("<Q", len(input_rows)) + b"".join(
             struct.pack("<i", r) for r in input_rows)
+    if version >= 4:
+        payload += struct.pack("<Q", 0 if cache is None else 1) + (cache or b"")
     hash_ = 0xcbf29ce484222325
-    for byte in payload:
+    # Version 4 on: FNV-1a's step over little-endian 64-bit words, then the tail bytes.
+    words = len(payload) // 8 if version >= 4 else 0
+    for (word,) in struct.iter_unpack("<Q", payload[:8 * words]):
+        hash_ = ((hash_ ^ word) * 0x100000001b3) & 0xffffffffffffffff
+    for byte in payload[8 * words:]:
         hash_ = ((hash_ ^ byte) * 0x100000001b3) & 0xffffffffffffffff
     return (b"TBMODEL\0" + struct.pack("<IQ", version, len(payload)) + payload +
             struct.pack("<Q", hash_))
+
+
+def cache_bytes(unknowns, tets, examples):
+    """A blend cache whose arrays have the right sizes: one supernode per unknown, no rows below,
+    an identity factor; kaji parameters all zero."""
+    def array(code, values):
+        return struct.pack("<Q", len(values)) + b"".join(struct.pack("<" + code, v) for v in values)
+    factor = (array("i", range(unknowns)) + array("i", range(unknowns + 1)) +
+              array("i", [0] * (unknowns + 1)) + array("i", []) +
+              array("q", range(unknowns + 1)) + array("d", [1.0] * unknowns))
+    kaji = (struct.pack("<3Q", tets, examples, 1) + array("d", [0.0] * (9 * tets * examples)) +
+            array("i", []) + array("i", [0]) + array("i", []) + array("d", []))
+    return factor + kaji
 
 
 def model_seeds():
@@ -245,6 +265,9 @@ def model_seeds():
     seed("model", "cube_v3_seam.tbm",
          model_bytes(3, CUBE_V, CUBE_T, seamed, 8, [stretched], [b"rest.obj", b"stretched.obj"],
                      [1], input_rows=list(range(8)) + [1, 2]))
+    seed("model", "cube_v4_cache.tbm",
+         model_bytes(4, CUBE_V, CUBE_T, surface, 8, [stretched], [b"rest.obj", b"stretched.obj"],
+                     [], cache=cache_bytes(len(CUBE_V) - 1, len(CUBE_T), 1)))
     seed("model", "cube_v1.tbm", model_bytes(1, CUBE_V, CUBE_T, surface, 8, [],
                                              [b"rest.obj"], []))
     huge = (1 << 31) - 1

@@ -82,7 +82,7 @@ bool isModelFile(const std::string& path) {
 
 void inspectModel(const std::string& path) {
   const ModelData m = readModelFile(path);
-  std::printf("%s: tetblend model (format version %u)\n", path.c_str(), kModelFormatVersion);
+  std::printf("%s: tetblend model (format version %u)\n", path.c_str(), m.formatVersion);
   std::printf("  rest: %s; %lld vertices (%d on the surface), %lld tets, %lld surface triangles\n",
               m.restSource.c_str(), static_cast<long long>(m.rest.vertices.rows()),
               m.surfaceVertexCount, static_cast<long long>(m.rest.tets.rows()),
@@ -92,6 +92,12 @@ void inspectModel(const std::string& path) {
         "  input surface: %lld vertices (copies along texture or normal seams merged "
         "for the tets)\n",
         static_cast<long long>(m.inputVertexCount()));
+  }
+  if (m.blendCache) {
+    std::printf(
+        "  fast load: the stitch factor (%zu entries) and the kaji parameters (rotation "
+        "consistency %s) are kept\n",
+        m.blendCache->factor.values.size(), m.blendCache->kaji.rotationConsistency ? "on" : "off");
   }
   printBox(m.rest.vertices);
   printTetQuality(m.rest);

@@ -1,11 +1,14 @@
 // tetblend prepare: surfaces in, model file out (prepare_model.h,
 // model_file.h).
 
+#include <iomanip>
 #include <memory>
+#include <sstream>
 
 #include "cli_common.h"
 #include "commands.h"
 #include "prepare_options.h"
+#include "tetblend/pipeline/make_blender.h"
 #include "tetblend/pipeline/model_file.h"
 
 namespace tetblend::cli {
@@ -17,6 +20,7 @@ struct PrepareArgs {
   std::vector<std::string> examples;
   std::string output;
   PrepareSettings settings;
+  bool fastLoad = false;
 };
 
 void runPrepare(const PrepareArgs& a) {
@@ -27,7 +31,20 @@ void runPrepare(const PrepareArgs& a) {
   PrepareMessages messages;
   messages.warning = printWarning;
   messages.note = [&](const std::string& line) { printNote(line, a.settings.quiet); };
-  const ModelData model = prepareWithProgress(a.rest, a.examples, a.settings, messages);
+  ModelData model = prepareWithProgress(a.rest, a.examples, a.settings, messages);
+  if (a.fastLoad) {
+    model.blendCache = blendCacheOf(model);
+    const auto megabytes = [](std::size_t doubles) {
+      std::ostringstream text;
+      text << std::fixed << std::setprecision(1) << 8.0 * static_cast<double>(doubles) / (1 << 20);
+      return text.str();
+    };
+    printNote("fast load: the model keeps the stitch factor (" +
+                  megabytes(model.blendCache->factor.values.size()) +
+                  " MB) and the kaji parameters (" +
+                  megabytes(model.blendCache->kaji.params.size()) + " MB)",
+              a.settings.quiet);
+  }
   writeModelFile(a.output, model);
 }
 
@@ -40,12 +57,18 @@ void registerPrepare(CLI::App& root) {
       "Validate a rest surface and its examples (same vertices and faces), fill the rest with tets "
       "(TetGen, surface kept) or tetrise it, place each example's interior vertices so all "
       "share the rest's tets, and save the model file that blend, batch, variations and "
-      "animate read. Parametrisation and the stitch factorisation are redone on load.");
+      "animate read. Parametrisation and the stitch factorisation are redone on load, unless "
+      "--fast-load keeps them in the model.");
   cmd->add_option("REST", args->rest, "rest surface (.obj/.off/.ply/.stl/.vtp)")->required();
   cmd->add_option("EXAMPLE", args->examples, "example surfaces with the rest's triangles")
       ->required();
   cmd->add_option("-o,--output", args->output, "model file to write")->required();
   addPrepareOptions(*cmd, args->settings);
+  cmd->add_flag("--fast-load", args->fastLoad,
+                "also keep the stitch factor and the kaji parameters in the model (a file several "
+                "times larger), so that every load skips the factorisation and, for kaji with "
+                "rotation consistency, the parametrisation: a one-shot blend of a large model in "
+                "a fraction of the time");
   addQuietOption(*cmd, args->settings.quiet);
   cmd->callback([args] { runPrepare(*args); });
 }

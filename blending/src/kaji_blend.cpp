@@ -30,7 +30,10 @@ class KajiBlender final : public TetMapBlender {
     const auto sizes = blend_detail::checkInput(input);
     tets_ = sizes.tets;
     examples_ = sizes.examples;
-    params_.resize(static_cast<size_t>(tets_) * examples_ * kParamsPerMap);
+    data_.tets = tets_;
+    data_.examples = examples_;
+    data_.rotationConsistency = input.rotationConsistency;
+    data_.params.resize(static_cast<size_t>(tets_) * examples_ * kParamsPerMap);
     std::vector<char> corrected(tets_, 0);
     std::vector<std::vector<RotationLift>> lifts(examples_);
     {
@@ -54,24 +57,55 @@ class KajiBlender final : public TetMapBlender {
         });
       }
     }
-    correctionStart_.push_back(0);
+    data_.correctionStart.push_back(0);
     for (int j = 0; j < tets_; ++j) {
       if (corrected[j] == 0) continue;
-      correctedTets_.push_back(j);
+      data_.correctedTets.push_back(j);
       for (int k = 0; k < examples_; ++k) {
         const Eigen::Vector3d& correction = lifts[k][j].correction;
         if (correction.isZero(0.0)) continue;
-        correctionExample_.push_back(k);
-        corrections_.insert(corrections_.end(), correction.data(),
-                            correction.data() + kCorrectionSize);
+        data_.correctionExample.push_back(k);
+        data_.corrections.insert(data_.corrections.end(), correction.data(),
+                                 correction.data() + kCorrectionSize);
       }
-      correctionStart_.push_back(static_cast<int>(correctionExample_.size()));
+      data_.correctionStart.push_back(static_cast<int>(data_.correctionExample.size()));
     }
-    correctedTets_.shrink_to_fit();
-    correctionStart_.shrink_to_fit();
-    correctionExample_.shrink_to_fit();
-    corrections_.shrink_to_fit();
+    data_.correctedTets.shrink_to_fit();
+    data_.correctionStart.shrink_to_fit();
+    data_.correctionExample.shrink_to_fit();
+    data_.corrections.shrink_to_fit();
   }
+
+  // Stored parameters (KajiParameterData's layout is this class's).
+  explicit KajiBlender(KajiParameterData data)
+      : tets_(data.tets), examples_(data.examples), data_(std::move(data)) {
+    const auto fail = [](const std::string& what) {
+      throw InputError("stored kaji parameters: " + what);
+    };
+    const auto& d = data_;
+    if (tets_ < 0 || examples_ < 1 ||
+        d.params.size() != static_cast<size_t>(tets_) * examples_ * kParamsPerMap) {
+      fail(std::to_string(d.params.size()) + " values for " + std::to_string(tets_) + " tets and " +
+           std::to_string(examples_) + " examples");
+    }
+    if (d.correctionStart.size() != d.correctedTets.size() + 1 || d.correctionStart[0] != 0 ||
+        static_cast<size_t>(d.correctionStart.back()) != d.correctionExample.size() ||
+        d.corrections.size() != d.correctionExample.size() * kCorrectionSize) {
+      fail("the lift corrections' sizes do not match");
+    }
+    for (size_t i = 0; i < d.correctedTets.size(); ++i) {
+      const int tet = d.correctedTets[i];
+      if (tet < 0 || tet >= tets_ || (i > 0 && tet <= d.correctedTets[i - 1]) ||
+          d.correctionStart[i + 1] < d.correctionStart[i]) {
+        fail("corrected tet " + std::to_string(tet) + " is out of range or order");
+      }
+    }
+    for (int k : d.correctionExample) {
+      if (k < 0 || k >= examples_) fail("a correction names example " + std::to_string(k));
+    }
+  }
+
+  const KajiParameterData& data() const { return data_; }
 
   BlendMethod method() const override { return BlendMethod::kKaji; }
 
@@ -98,19 +132,20 @@ class KajiBlender final : public TetMapBlender {
     }
     // Corrected tets: B = exp(base) [exp(correction) exp(Y)], the bracket
     // batched with the others (the correction in place of the base).
-    const auto first = std::lower_bound(correctedTets_.begin(), correctedTets_.end(), begin);
-    const auto last = std::lower_bound(first, correctedTets_.end(), end);
+    const auto& corrected = data_.correctedTets;
+    const auto first = std::lower_bound(corrected.begin(), corrected.end(), begin);
+    const auto last = std::lower_bound(first, corrected.end(), end);
     std::vector<Eigen::Vector3d> bases(last - first);
     for (auto t = first; t != last; ++t) {
-      const auto index = t - correctedTets_.begin();
+      const auto index = t - corrected.begin();
       double* sum = logs.data() + static_cast<size_t>(*t - begin) * kParamsPerMap;
       Eigen::Map<Eigen::Vector3d> rotationLog(sum);
       bases[t - first] = rotationLog;
       rotationLog.setZero();
       // The zero corrections of the other examples add nothing.
-      for (int i = correctionStart_[index]; i < correctionStart_[index + 1]; ++i) {
-        rotationLog += weights[correctionExample_[i]] *
-                       Eigen::Map<const Eigen::Vector3d>(corrections_.data() +
+      for (int i = data_.correctionStart[index]; i < data_.correctionStart[index + 1]; ++i) {
+        rotationLog += weights[data_.correctionExample[i]] *
+                       Eigen::Map<const Eigen::Vector3d>(data_.corrections.data() +
                                                          static_cast<size_t>(i) * kCorrectionSize);
       }
     }
@@ -122,22 +157,16 @@ class KajiBlender final : public TetMapBlender {
 
  private:
   double* param(int tet, int example) {
-    return params_.data() + (static_cast<size_t>(tet) * examples_ + example) * kParamsPerMap;
+    return data_.params.data() + (static_cast<size_t>(tet) * examples_ + example) * kParamsPerMap;
   }
   const double* param(int tet, int example) const {
-    return params_.data() + (static_cast<size_t>(tet) * examples_ + example) * kParamsPerMap;
+    return data_.params.data() + (static_cast<size_t>(tet) * examples_ + example) * kParamsPerMap;
   }
   int tets_ = 0;
   int examples_ = 0;
-  std::vector<double> params_;
-  // The lift corrections, stored only where non-zero: the ascending tets with
-  // a non-zero correction in some example; for corrected tet i, the entries
-  // [correctionStart_[i], correctionStart_[i + 1]) of correctionExample_
-  // (which examples) and of corrections_ (3 doubles each).
-  std::vector<int> correctedTets_;
-  std::vector<int> correctionStart_;
-  std::vector<int> correctionExample_;
-  std::vector<double> corrections_;
+  // The parameters, and the lift corrections stored only where non-zero
+  // (blend_cache.h).
+  KajiParameterData data_;
 };
 
 class KajiFrechetBlender final : public TetMapBlender {
@@ -184,6 +213,19 @@ class KajiFrechetBlender final : public TetMapBlender {
 };
 
 }  // namespace
+
+KajiParameterData kajiParameterData(const TetMapBlender& blender) {
+  const auto* kaji = dynamic_cast<const KajiBlender*>(&blender);
+  if (kaji == nullptr) {
+    throw InputError("kajiParameterData: '" + blendMethodName(blender.method()) +
+                     "' is not the kaji method");
+  }
+  return kaji->data();
+}
+
+std::unique_ptr<TetMapBlender> kajiBlenderFromData(KajiParameterData data) {
+  return std::make_unique<KajiBlender>(std::move(data));
+}
 
 std::unique_ptr<TetMapBlender> prepareKajiBlender(BlendMethod method, const BlendInput& input) {
   if (method == BlendMethod::kKaji) return std::make_unique<KajiBlender>(input);

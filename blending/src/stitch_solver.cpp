@@ -47,6 +47,24 @@ StitchSolver::StitchSolver(const TetMesh& rest, const StitchOptions& options)
   m.factor(m.ldlt, matrix);
 }
 
+StitchSolver::StitchSolver(const TetMesh& rest, StitchFactorData factor)
+    : impl_(std::make_unique<Impl>()) {
+  Impl& m = *impl_;
+  restTetData(rest);  // the same InputError as a factoring solver's for a bad rest tet
+  m.rest = rest;
+  m.buildComponents(static_cast<int>(rest.vertices.rows()));
+  m.buildChunks();
+  std::vector<int>().swap(m.reducedIndex);
+#ifdef TETBLEND_HAVE_CHOLMOD
+  m.backend = StitchBackend::kCholmodSupernodal;
+  m.adoptFactor(std::make_unique<stitch_detail::SupernodalFactor>(
+      std::move(factor), static_cast<int>(m.freeVertices.size())));
+#else
+  (void)factor;
+  throw InputError("stitch: a stored factor needs CHOLMOD, which this build of tetblend lacks");
+#endif
+}
+
 StitchSolver::~StitchSolver() = default;
 StitchSolver::StitchSolver(StitchSolver&&) noexcept = default;
 StitchSolver& StitchSolver::operator=(StitchSolver&&) noexcept = default;
@@ -65,6 +83,13 @@ double StitchSolver::factorNonzeros() const {
   if (impl_->supernodal) return impl_->supernodal->nonzeros();
 #endif
   return static_cast<double>(impl_->ldlt.matrixL().nestedExpression().nonZeros());
+}
+
+StitchFactorData StitchSolver::factorData() const {
+#ifdef TETBLEND_HAVE_CHOLMOD
+  if (impl_->supernodal) return impl_->supernodal->data();
+#endif
+  throw InputError("stitch: only the CHOLMOD supernodal factor can be stored");
 }
 
 double StitchSolver::memoryBytes() const {

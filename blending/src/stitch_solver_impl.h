@@ -101,7 +101,11 @@ struct StitchSolver::Impl {
   std::vector<int> factorVertex;  // row of the permuted system -> vertex
 
   void factorCholmod(stitch_detail::SparseMatrix& matrix) {
-    supernodal = std::make_unique<stitch_detail::SupernodalFactor>(matrix);
+    adoptFactor(std::make_unique<stitch_detail::SupernodalFactor>(matrix));
+  }
+  // Keeps `factor` (of the free vertices) and the row maps of its permutation.
+  void adoptFactor(std::unique_ptr<stitch_detail::SupernodalFactor> factor) {
+    supernodal = std::move(factor);
     const int* perm = supernodal->perm();
     factorRow.resize(freeVertices.size());
     factorVertex.resize(freeVertices.size());

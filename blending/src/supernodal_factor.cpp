@@ -32,9 +32,9 @@ cholmod_factor* cholmodFactor(cholmod_sparse& view, cholmod_common& common) {
   cholmod_factor* factor = cholmod_analyze(&view, &common);
   if (factor != nullptr) {
     try {
-      requireAllocatable(2 * sizeof(double) * factor->xsize + blasWorkspaceBytes(),
-                         "the stitch's Cholesky factorisation (" + std::to_string(view.nrow) +
-                             " free vertices)");
+      requireAllocatable(
+          2 * sizeof(double) * factor->xsize + blasWorkspaceBytes(),
+          "the stitch's Cholesky factorisation (" + std::to_string(view.nrow) + " free vertices)");
     } catch (const ResourceError&) {
       cholmod_free_factor(&factor, &common);
       cholmod_finish(&common);
@@ -98,8 +98,6 @@ SupernodalFactor::SupernodalFactor(Eigen::SparseMatrix<double>& lower) {
     rowStart_[s + 1] = rowStart_[s] + below;
     valueStart_[s + 1] =
         valueStart_[s] + triangleSize(columns) + static_cast<int64_t>(below) * columns;
-    maxUpdateRows_ = std::max<Eigen::Index>(maxUpdateRows_, below);
-    maxColumns_ = std::max<Eigen::Index>(maxColumns_, columns);
   }
   rows_.resize(rowStart_[nsuper]);
   values_.resize(valueStart_[nsuper]);
@@ -118,6 +116,74 @@ SupernodalFactor::SupernodalFactor(Eigen::SparseMatrix<double>& lower) {
   }
   cholmod_free_factor(&factor, &common);
   cholmod_finish(&common);
+  finish();
+}
+
+SupernodalFactor::SupernodalFactor(StitchFactorData data, int unknowns)
+    : perm_(std::move(data.perm)),
+      super_(std::move(data.super)),
+      rowStart_(std::move(data.rowStart)),
+      rows_(std::move(data.rows)),
+      valueStart_(std::move(data.valueStart)),
+      values_(std::move(data.values)) {
+  const auto fail = [](const std::string& what) {
+    throw InputError("stored stitch factor: " + what);
+  };
+  const auto n = static_cast<size_t>(unknowns);
+  if (perm_.size() != n)
+    fail("its permutation has " + std::to_string(perm_.size()) + " entries for " +
+         std::to_string(n) + " unknowns");
+  std::vector<char> seen(n, 0);
+  for (int p : perm_) {
+    if (p < 0 || static_cast<size_t>(p) >= n || seen[p])
+      fail("its permutation repeats or skips " + std::to_string(p));
+    seen[p] = 1;
+  }
+  if (super_.empty() || super_.front() != 0 || static_cast<size_t>(super_.back()) != n) {
+    fail("its supernodes do not cover the " + std::to_string(n) + " unknowns");
+  }
+  const size_t nsuper = super_.size() - 1;
+  if (rowStart_.size() != nsuper + 1 || valueStart_.size() != nsuper + 1 || rowStart_[0] != 0 ||
+      valueStart_[0] != 0) {
+    fail("its block starts do not match its " + std::to_string(nsuper) + " supernodes");
+  }
+  for (size_t s = 0; s < nsuper; ++s) {
+    // 64-bit differences: the entries are not yet known to be in range.
+    const int64_t columns = int64_t{super_[s + 1]} - super_[s];
+    const int64_t below = int64_t{rowStart_[s + 1]} - rowStart_[s];
+    if (columns <= 0 || below < 0 || static_cast<uint64_t>(rowStart_[s + 1]) > rows_.size()) {
+      fail("supernode " + std::to_string(s) + " has an empty or out-of-range block");
+    }
+    int previous = super_[s + 1] - 1;  // the rows lie below the supernode, ascending
+    for (int i = rowStart_[s]; i < rowStart_[s + 1]; ++i) {
+      if (rows_[i] <= previous || static_cast<size_t>(rows_[i]) >= n) {
+        fail("supernode " + std::to_string(s) + " has row " + std::to_string(rows_[i]) +
+             " out of order or range");
+      }
+      previous = rows_[i];
+    }
+    const int64_t values = triangleSize(static_cast<int>(columns)) + below * columns;
+    if (valueStart_[s] < 0 || valueStart_[s + 1] < valueStart_[s] ||
+        valueStart_[s + 1] - valueStart_[s] != values) {
+      fail("supernode " + std::to_string(s) + " has the wrong number of values");
+    }
+  }
+  if (static_cast<size_t>(rowStart_.back()) != rows_.size() ||
+      static_cast<size_t>(valueStart_.back()) != values_.size()) {
+    fail("its row or value count does not match its supernodes");
+  }
+  finish();
+}
+
+StitchFactorData SupernodalFactor::data() const {
+  return {perm_, super_, rowStart_, rows_, valueStart_, values_};
+}
+
+void SupernodalFactor::finish() {
+  for (size_t s = 0; s + 1 < super_.size(); ++s) {
+    maxUpdateRows_ = std::max<Eigen::Index>(maxUpdateRows_, rowStart_[s + 1] - rowStart_[s]);
+    maxColumns_ = std::max<Eigen::Index>(maxColumns_, super_[s + 1] - super_[s]);
+  }
   findSplit();
 }
 
@@ -277,8 +343,7 @@ void SupernodalFactor::findSplit() {
   double bestCost = entries(0, nsuper);
   for (int split = 1; split < nsuper; ++split) {
     const int top = parent[split - 1] < 0 ? nsuper : parent[split - 1];
-    const double cost =
-        std::max(entries(0, split), entries(split, top)) + entries(top, nsuper);
+    const double cost = std::max(entries(0, split), entries(split, top)) + entries(top, nsuper);
     if (cost < bestCost) {
       bestCost = cost;
       split_ = split;

@@ -14,6 +14,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "tetblend/blending/blend_cache.h"
+
 namespace tetblend {
 namespace stitch_detail {
 
@@ -40,6 +42,13 @@ class SupernodalFactor {
   /// Factors `lower` (n by n, lower triangle stored, compressed). Throws
   /// NumericalError when A is not positive definite.
   explicit SupernodalFactor(Eigen::SparseMatrix<double>& lower);
+  /// A factor stored by data() for a system of `unknowns` unknowns. Throws
+  /// InputError, naming the first inconsistency, unless its structure is one
+  /// of `unknowns` rows (the values are not checked).
+  SupernodalFactor(StitchFactorData data, int unknowns);
+
+  /// The factor's arrays (blend_cache.h), for the constructor above.
+  StitchFactorData data() const;
 
   /// P as CHOLMOD's Perm: row k of the permuted system is unknown perm()[k].
   const int* perm() const { return perm_.data(); }
@@ -60,6 +69,8 @@ class SupernodalFactor {
                bool parallel) const;
   void backward(int begin, int end, double* yv, Eigen::Matrix<double, Eigen::Dynamic, 3>& u,
                 Eigen::Matrix<double, Eigen::Dynamic, 3>& t, bool parallel) const;
+  // The widest supernode and largest off-diagonal block, then findSplit.
+  void finish();
   void findSplit();
 
   std::vector<int> perm_;            // n

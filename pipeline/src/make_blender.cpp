@@ -20,6 +20,10 @@ TetMesh stitchedMesh(const ModelData& model) {
   return kept;
 }
 
+BlendCache blendCacheOf(const ModelData& model) {
+  return makeBlender(model, {BlendMethod::kKaji}, true, false, false).exportCache();
+}
+
 ShapeBlender makeBlender(const ModelData& model, const std::vector<BlendMethod>& methods,
                          bool rotationConsistency, bool nonlinearStitch, bool keepTargets) {
   ShapeBlenderOptions options;
@@ -27,6 +31,8 @@ ShapeBlender makeBlender(const ModelData& model, const std::vector<BlendMethod>&
   options.rotationConsistency = rotationConsistency;
   options.nonlinearStitch = nonlinearStitch;
   options.keepTargets = keepTargets;
+  if (model.blendCache)
+    return ShapeBlender(stitchedMesh(model), model.examples, options, *model.blendCache);
   return ShapeBlender(stitchedMesh(model), model.examples, options);
 }
 

@@ -17,6 +17,8 @@ constexpr std::size_t kTrailerSize = 8;
 // Sanity cap on counts read from a file, far above any mesh this tool handles,
 // so that a corrupt count fails cleanly instead of allocating wildly.
 constexpr std::uint64_t kMaxCount = 1ULL << 31;
+// Arrays are copied as they are in memory where that is the file's byte order.
+constexpr bool kLittleEndianHost = __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__;
 
 class ByteWriter {
  public:
@@ -33,7 +35,22 @@ class ByteWriter {
     raw(reinterpret_cast<const unsigned char*>(s.data()), s.size());
   }
   void raw(const unsigned char* data, std::size_t size) {
-    for (std::size_t i = 0; i < size; ++i) bytes_.push_back(data[i]);
+    bytes_.insert(bytes_.end(), data, data + size);
+  }
+  // A count, then the values (i32, i64 or f64), little-endian.
+  template <typename T>
+  void array(const std::vector<T>& values) {
+    static_assert(sizeof(T) == 4 || sizeof(T) == 8, "i32, i64 or f64 values");
+    u64(values.size());
+    if constexpr (kLittleEndianHost) {
+      raw(reinterpret_cast<const unsigned char*>(values.data()), sizeof(T) * values.size());
+    } else {
+      for (const T& v : values) {
+        std::uint64_t bits = 0;
+        std::memcpy(&bits, &v, sizeof(T));
+        little(bits, sizeof(T));
+      }
+    }
   }
   std::vector<unsigned char>& bytes() { return bytes_; }
 
@@ -65,6 +82,15 @@ class ByteReader {
     }
     return n;
   }
+  // A u64 that must be 0 or 1.
+  bool flag(const char* what) {
+    const std::uint64_t v = u64();
+    if (v > 1) {
+      throw InputError(path_ + ": damaged model file (" + what + " = " + std::to_string(v) +
+                       "); re-run 'tetblend prepare'");
+    }
+    return v == 1;
+  }
   std::string text() {
     const std::uint64_t n = count("string length");
     need(n);
@@ -73,6 +99,23 @@ class ByteReader {
     return s;
   }
   bool atEnd() const { return pos_ == size_; }
+  // ByteWriter::array's values: the count checked against the bytes left.
+  template <typename T>
+  std::vector<T> array(const char* what) {
+    const std::uint64_t n = count(what);
+    requireRoom(n, sizeof(T), what);
+    std::vector<T> values(n);
+    if constexpr (kLittleEndianHost) {
+      std::memcpy(values.data(), data_ + pos_, sizeof(T) * n);
+      pos_ += sizeof(T) * n;
+    } else {
+      for (T& v : values) {
+        const std::uint64_t bits = little(sizeof(T));
+        std::memcpy(&v, &bits, sizeof(T));
+      }
+    }
+    return values;
+  }
   // Refuses `n` items of `bytesEach` bytes before anything is allocated for
   // them, when the rest of the payload cannot hold them.
   void requireRoom(std::uint64_t n, std::uint64_t bytesEach, const char* what) const {
@@ -134,6 +177,25 @@ std::vector<unsigned char> encodePayload(const ModelData& m) {
   for (int t : m.excludedTets) w.i32(t);
   w.u64(m.inputVertexRows.size());
   for (int row : m.inputVertexRows) w.i32(row);
+  w.u64(m.blendCache ? 1 : 0);
+  if (m.blendCache) {
+    const StitchFactorData& f = m.blendCache->factor;
+    w.array(f.perm);
+    w.array(f.super);
+    w.array(f.rowStart);
+    w.array(f.rows);
+    w.array(f.valueStart);
+    w.array(f.values);
+    const KajiParameterData& k = m.blendCache->kaji;
+    w.u64(static_cast<std::uint64_t>(k.tets));
+    w.u64(static_cast<std::uint64_t>(k.examples));
+    w.u64(k.rotationConsistency ? 1 : 0);
+    w.array(k.params);
+    w.array(k.correctedTets);
+    w.array(k.correctionStart);
+    w.array(k.correctionExample);
+    w.array(k.corrections);
+  }
   return std::move(w.bytes());
 }
 
@@ -146,6 +208,7 @@ ModelData decodePayload(const unsigned char* data, std::size_t size, const std::
   const std::uint64_t ns = r.count("surface vertex count");
   const std::uint64_t ne = r.count("example count");
   ModelData m;
+  m.formatVersion = version;
   m.surfaceVertexCount = static_cast<int>(ns);
   constexpr std::uint64_t kVertexBytes = 3 * 8, kTetBytes = 4 * 4, kTriangleBytes = 3 * 4;
   r.requireRoom(nv, kVertexBytes, "vertex count");
@@ -176,6 +239,26 @@ ModelData decodePayload(const unsigned char* data, std::size_t size, const std::
     const std::uint64_t nu = r.count("input vertex count");
     r.requireRoom(nu, 4, "input vertex count");
     for (std::uint64_t i = 0; i < nu; ++i) m.inputVertexRows.push_back(r.i32());
+  }
+  if (version >= 4 && r.flag("blend cache flag")) {
+    BlendCache cache;
+    StitchFactorData& f = cache.factor;
+    f.perm = r.array<int>("factor permutation size");
+    f.super = r.array<int>("factor supernode count");
+    f.rowStart = r.array<int>("factor row start count");
+    f.rows = r.array<int>("factor row count");
+    f.valueStart = r.array<std::int64_t>("factor value start count");
+    f.values = r.array<double>("factor value count");
+    KajiParameterData& k = cache.kaji;
+    k.tets = static_cast<int>(r.count("kaji tet count"));
+    k.examples = static_cast<int>(r.count("kaji example count"));
+    k.rotationConsistency = r.flag("kaji rotation consistency");
+    k.params = r.array<double>("kaji parameter count");
+    k.correctedTets = r.array<int>("kaji corrected tet count");
+    k.correctionStart = r.array<int>("kaji correction start count");
+    k.correctionExample = r.array<int>("kaji correction count");
+    k.corrections = r.array<double>("kaji correction value count");
+    m.blendCache = std::move(cache);
   }
   if (!r.atEnd()) {
     throw InputError(path +
@@ -213,6 +296,23 @@ std::uint64_t fnv1a64(const unsigned char* data, std::size_t size, std::uint64_t
     hash *= kPrime;
   }
   return hash;
+}
+
+std::uint64_t fnv1a64Words(const unsigned char* data, std::size_t size) {
+  constexpr std::uint64_t kPrime = 0x100000001b3ULL;
+  std::uint64_t hash = 0xcbf29ce484222325ULL;
+  const std::size_t words = size / 8;
+  for (std::size_t i = 0; i < words; ++i) {
+    std::uint64_t word = 0;
+    for (int b = 0; b < 8; ++b) word |= static_cast<std::uint64_t>(data[8 * i + b]) << (8 * b);
+    hash ^= word;
+    hash *= kPrime;
+  }
+  return fnv1a64(data + 8 * words, size - 8 * words, hash);
+}
+
+std::uint64_t modelChecksum(const unsigned char* payload, std::size_t size, std::uint32_t version) {
+  return version >= 4 ? fnv1a64Words(payload, size) : fnv1a64(payload, size);
 }
 
 void checkModel(const ModelData& m, const std::string& what) {
@@ -265,7 +365,7 @@ void writeModelFile(const std::string& path, const ModelData& model) {
   file.u32(kModelFormatVersion);
   file.u64(payload.size());
   file.raw(payload.data(), payload.size());
-  file.u64(fnv1a64(payload.data(), payload.size()));
+  file.u64(modelChecksum(payload.data(), payload.size(), kModelFormatVersion));
   writeFileAtomically(path, [&](const std::string& temp) {
     std::ofstream out(temp, std::ios::binary);
     out.write(reinterpret_cast<const char*>(file.bytes().data()),
@@ -275,10 +375,14 @@ void writeModelFile(const std::string& path, const ModelData& model) {
 }
 
 ModelData readModelFile(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
+  std::ifstream in(path, std::ios::binary | std::ios::ate);
   if (!in) throw InputError(path + ": cannot open the model file");
-  const std::vector<unsigned char> bytes((std::istreambuf_iterator<char>(in)),
-                                         std::istreambuf_iterator<char>());
+  const std::streamoff fileSize = in.tellg();
+  in.seekg(0);
+  std::vector<unsigned char> bytes(fileSize > 0 ? static_cast<std::size_t>(fileSize) : 0);
+  if (!in.read(reinterpret_cast<char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()))) {
+    throw InputError(path + ": cannot read the model file");
+  }
   if (bytes.size() < 8 || std::memcmp(bytes.data(), kMagic, 8) != 0) {
     throw InputError(path + ": not a tetblend model file (make one with 'tetblend prepare')");
   }
@@ -298,7 +402,7 @@ ModelData readModelFile(const std::string& path) {
   }
   const unsigned char* payload = bytes.data() + kHeaderSize;
   const std::uint64_t stored = readLittle(bytes, kHeaderSize + payloadSize, 8);
-  if (fnv1a64(payload, payloadSize) != stored) {
+  if (modelChecksum(payload, payloadSize, version) != stored) {
     throw InputError(path + ": damaged model file (checksum mismatch); re-run 'tetblend prepare'");
   }
   ModelData model = decodePayload(payload, payloadSize, path, version);

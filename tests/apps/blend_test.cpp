@@ -103,8 +103,8 @@ TEST_F(BlendCommand, MethodAliasDqsIsDq) {
 TEST_F(BlendCommand, InvertedTetsAreWarnedAboutAndOverflowIsAWeightsError) {
   // Far extrapolation (the 5,-4) turns tets inside out: the blend is
   // written, with one warning line counting them.
-  const RunResult far = tetblend(
-      {"blend", model_.string(), "-w", "5,-4", "-o", (dir_ / "far.vtu").string()}, dir_);
+  const RunResult far =
+      tetblend({"blend", model_.string(), "-w", "5,-4", "-o", (dir_ / "far.vtu").string()}, dir_);
   ASSERT_EQ(far.code, 0) << far.err;
   EXPECT_EQ(far.err.rfind("tetblend: warning: ", 0), 0u) << far.err;
   EXPECT_NE(far.err.find("tets are inverted at weights 5,-4"), std::string::npos) << far.err;
@@ -135,6 +135,35 @@ TEST_F(BlendCommand, StraightFromSurfacesMatchesTheModel) {
   EXPECT_LT(maxDistance(pointsOf(readVtp(dir_ / "direct.vtp")),
                         pointsOf(readVtp(dir_ / "via_model.vtp"))),
             kInterpolationTolerance);
+}
+
+// A model prepared with --fast-load keeps the factor and the kaji
+// parameters: it is larger, and its blends are those of the plain model byte
+// for byte (the same computation, done at prepare instead of at load).
+TEST_F(BlendCommand, FastLoadModelBlendsByteForByteAsThePlainOne) {
+  const fs::path fast = dir_ / "fast.tbm";
+  const RunResult prepared =
+      tetblend({"prepare", (dir_ / "bar_rest.obj").string(), (dir_ / "bar_twist4pi.obj").string(),
+                (dir_ / "bar_bend.obj").string(), "-o", fast.string(), "--fast-load"},
+               dir_);
+  ASSERT_EQ(prepared.code, 0) << prepared.err;
+  EXPECT_NE(prepared.err.find("fast load: the model keeps the stitch factor"), std::string::npos)
+      << prepared.err;
+  EXPECT_GT(fs::file_size(fast), fs::file_size(model_));
+  const RunResult inspected = tetblend({"inspect", fast.string()}, dir_);
+  ASSERT_EQ(inspected.code, 0) << inspected.err;
+  EXPECT_NE(inspected.out.find("format version 4"), std::string::npos) << inspected.out;
+  EXPECT_NE(inspected.out.find("fast load: the stitch factor"), std::string::npos) << inspected.out;
+  for (const std::string method : {"kaji", "dq"}) {
+    for (const auto& [model, name] : {std::pair{model_, "plain"}, std::pair{fast, "fast"}}) {
+      const RunResult r = tetblend({"blend", model.string(), "-w", "0.3,0.4", "--method", method,
+                                    "-o", (dir_ / (method + name + ".vtu")).string(), "--quiet"},
+                                   dir_);
+      ASSERT_EQ(r.code, 0) << r.err;
+    }
+    EXPECT_EQ(slurp(dir_ / (method + "plain.vtu")), slurp(dir_ / (method + "fast.vtu"))) << method;
+    EXPECT_EQ(slurp(dir_ / (method + "plain.vtp")), slurp(dir_ / (method + "fast.vtp"))) << method;
+  }
 }
 
 }  // namespace

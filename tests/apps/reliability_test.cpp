@@ -37,7 +37,9 @@ void writeModel(const fs::path& path, const std::string& payload) {
   appendLittle(bytes, payload.size(), 8);
   bytes += payload;
   appendLittle(bytes,
-               fnv1a64(reinterpret_cast<const unsigned char*>(payload.data()), payload.size()), 8);
+               modelChecksum(reinterpret_cast<const unsigned char*>(payload.data()), payload.size(),
+                             kModelFormatVersion),
+               8);
   std::ofstream(path, std::ios::binary) << bytes;
 }
 

@@ -1,5 +1,5 @@
-// The model file (pipeline/model_file.h): exact round trips, the hash, the
-// version 1 and 2 layouts.
+// The model file (pipeline/model_file.h): exact round trips, the hashes, the
+// version 1 to 3 layouts, the blend cache.
 
 #include "tetblend/pipeline/model_file.h"
 
@@ -10,6 +10,7 @@
 #include <iterator>
 
 #include "tetblend/core/error.h"
+#include "tetblend/pipeline/make_blender.h"
 
 namespace tetblend {
 namespace {
@@ -74,26 +75,28 @@ void rewriteAsVersion(const std::string& path, std::uint32_t version, std::size_
   bytes.resize(kHeader + payload + kHash);
   putLittle(bytes, 8, version, 4);
   putLittle(bytes, 12, payload, 8);
-  putLittle(bytes, kHeader + payload, fnv1a64(bytes.data() + kHeader, payload), 8);
+  putLittle(bytes, kHeader + payload, modelChecksum(bytes.data() + kHeader, payload, version), 8);
   writeBytes(path, bytes);
 }
 
 // Each list a version added is an u64 count followed by its entries.
 constexpr std::size_t kEmptyListBytes = 8;
 
-TEST(ModelFile, ExcludedTetsRoundTripAndVersionsOneAndTwoStillRead) {
+TEST(ModelFile, ExcludedTetsRoundTripAndVersionsOneToThreeStillRead) {
   ModelData m = oneTetModel();
   m.excludedTets = {0};
   const std::string path = (std::filesystem::path(::testing::TempDir()) / "excluded.tbm").string();
   writeModelFile(path, m);
   EXPECT_EQ(readModelFile(path).excludedTets, m.excludedTets);
 
-  // Version 2 (before input vertex rows) and version 1 (before excluded tets).
+  // Version 3 (before the blend cache), 2 (before input vertex rows) and 1
+  // (before excluded tets).
   m.excludedTets.clear();
-  for (const std::uint32_t version : {2u, 1u}) {
+  for (const std::uint32_t version : {3u, 2u, 1u}) {
     writeModelFile(path, m);
     rewriteAsVersion(path, version, (kModelFormatVersion - version) * kEmptyListBytes);
     const ModelData r = readModelFile(path);
+    EXPECT_EQ(r.formatVersion, version);
     EXPECT_TRUE(r.excludedTets.empty()) << version;
     EXPECT_TRUE(r.inputVertexRows.empty()) << version;
     EXPECT_EQ(r.examples[0], m.examples[0]) << version;
@@ -127,6 +130,64 @@ TEST(ModelFile, InputVertexRowsRoundTripAndGiveTheInputsVertices) {
   EXPECT_THROW(writeModelFile(path, m), InputError);
   m.inputVertexRows = {0, 1, 2, 3, 1};  // a triangle then refers to input vertex 5 of 5
   EXPECT_THROW(writeModelFile(path, m), InputError);
+}
+
+TEST(ModelFile, WordChecksumMatchesFnv1aStepsOverLittleEndianWords) {
+  // By hand: (basis ^ word) * prime mod 2^64 for the word of "abcdefgh" read
+  // little-endian, then FNV-1a's byte step for the tail "i".
+  const std::string text = "abcdefghi";
+  const auto* bytes = reinterpret_cast<const unsigned char*>(text.data());
+  EXPECT_EQ(fnv1a64Words(bytes, 0), 0xcbf29ce484222325ULL);
+  EXPECT_EQ(fnv1a64Words(bytes, 8), 0x3919eeb00ee1e68cULL);
+  EXPECT_EQ(fnv1a64Words(bytes, 9), 0xe8f77a2949db571fULL);
+  EXPECT_EQ(modelChecksum(bytes, 9, 3), fnv1a64(bytes, 9));
+  EXPECT_EQ(modelChecksum(bytes, 9, 4), fnv1a64Words(bytes, 9));
+}
+
+// A five-tet model keeps its blend cache bit for bit, and a blender of the
+// model read back gives the blends of one that factors afresh.
+TEST(ModelFile, BlendCacheRoundTripsAndGivesTheSameBlends) {
+  ModelData m = oneTetModel();
+  m.rest.vertices.conservativeResize(5, 3);
+  m.rest.vertices.row(4) << 1, 1, 1;
+  m.rest.tets.conservativeResize(2, 4);
+  m.rest.tets.row(1) << 1, 2, 3, 4;  // positive: (1,1,1) is beyond the face 1 2 3
+  m.examples = {m.rest.vertices * 2.0};
+  m.examples[0](4, 0) += 0.25;
+  m.blendCache = blendCacheOf(m);
+  const std::string path = (std::filesystem::path(::testing::TempDir()) / "cache.tbm").string();
+  writeModelFile(path, m);
+  const ModelData r = readModelFile(path);
+  ASSERT_TRUE(r.blendCache.has_value());
+  EXPECT_EQ(r.blendCache->factor.perm, m.blendCache->factor.perm);
+  EXPECT_EQ(r.blendCache->factor.values, m.blendCache->factor.values);
+  EXPECT_EQ(r.blendCache->factor.valueStart, m.blendCache->factor.valueStart);
+  EXPECT_EQ(r.blendCache->kaji.params, m.blendCache->kaji.params);
+  EXPECT_EQ(r.blendCache->kaji.tets, 2);
+  EXPECT_TRUE(r.blendCache->kaji.rotationConsistency);
+  ModelData plain = r;
+  plain.blendCache.reset();
+  const std::vector<double> w{0.4};
+  EXPECT_TRUE(makeBlender(r, {BlendMethod::kKaji}, true, false).blend(w).vertices ==
+              makeBlender(plain, {BlendMethod::kKaji}, true, false).blend(w).vertices);
+
+  // The cache flag is 0 or 1; anything else is damage.
+  writeModelFile(path, plain);
+  std::vector<unsigned char> bytes = fileBytes(path);
+  constexpr std::size_t kHeader = 8 + 4 + 8, kHash = 8;
+  const std::size_t flagAt = bytes.size() - kHash - 8;
+  ASSERT_EQ(bytes[flagAt], 0);
+  bytes[flagAt] = 2;
+  const std::size_t payload = bytes.size() - kHeader - kHash;
+  putLittle(bytes, kHeader + payload, modelChecksum(bytes.data() + kHeader, payload, 4), 8);
+  writeBytes(path, bytes);
+  try {
+    readModelFile(path);
+    ADD_FAILURE() << "a cache flag of 2 was accepted";
+  } catch (const InputError& error) {
+    EXPECT_NE(std::string(error.what()).find("blend cache flag = 2"), std::string::npos)
+        << error.what();
+  }
 }
 
 }  // namespace

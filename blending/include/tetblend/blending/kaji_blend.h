@@ -5,6 +5,7 @@
 
 #include <memory>
 
+#include "tetblend/blending/blend_cache.h"
 #include "tetblend/blending/blend_method.h"
 
 namespace tetblend {
@@ -20,5 +21,15 @@ namespace tetblend {
 /// more than half a turn per tet. NumericalError naming the tet when the
 /// iteration does not converge for a weight vector.
 std::unique_ptr<TetMapBlender> prepareKajiBlender(BlendMethod method, const BlendInput& input);
+
+/// The parameters of a kKaji blender, to be stored (blend_cache.h); InputError
+/// for a blender of another method.
+KajiParameterData kajiParameterData(const TetMapBlender& blender);
+
+/// A kKaji blender from parameters kajiParameterData gave, blending exactly
+/// as the blender that gave them. InputError when their sizes or indices are
+/// inconsistent (the caller checks tets, examples and rotationConsistency
+/// against its own).
+std::unique_ptr<TetMapBlender> kajiBlenderFromData(KajiParameterData data);
 
 }  // namespace tetblend

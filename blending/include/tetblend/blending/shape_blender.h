@@ -12,6 +12,7 @@
 #include <memory>
 #include <vector>
 
+#include "tetblend/blending/blend_cache.h"
 #include "tetblend/blending/blend_method.h"
 #include "tetblend/blending/nonlinear_stitch.h"
 #include "tetblend/blending/stitch_solver.h"
@@ -75,6 +76,14 @@ class ShapeBlender {
   /// DomainError when a method cannot parametrise an example tet.
   ShapeBlender(const TetMesh& rest, const std::vector<Vertices>& examples,
                const ShapeBlenderOptions& options = {});
+  /// As above, starting from `cache`: what exportCache() gave for the same
+  /// rest and examples. Its factor is used when options.stitch asks for the
+  /// supernodal backend, its kaji parameters when options.methods has kKaji
+  /// and they were made with options.rotationConsistency; the rest is
+  /// computed. Blends are then bit for bit those of the exporting blender.
+  /// InputError also when the cache does not fit the rest and examples.
+  ShapeBlender(const TetMesh& rest, const std::vector<Vertices>& examples,
+               const ShapeBlenderOptions& options, BlendCache cache);
   ~ShapeBlender();
   ShapeBlender(ShapeBlender&&) noexcept;
   ShapeBlender& operator=(ShapeBlender&&) noexcept;
@@ -83,6 +92,10 @@ class ShapeBlender {
   void prepare(BlendMethod method);
   /// True if blend(weights, method) can run without prepare(method).
   bool isPrepared(BlendMethod method) const;
+  /// The stitch's factor and the kaji parameters, for the constructor that
+  /// takes a cache (blend_cache.h). InputError unless kKaji is prepared and
+  /// the backend is CHOLMOD's supernodal one.
+  BlendCache exportCache() const;
 
   /// Blended shape for `weights` with the first method of the options.
   BlendResult blend(const std::vector<double>& weights) const;
@@ -106,9 +119,19 @@ class ShapeBlender {
   Centroids blendedCentroids(const std::vector<double>& weights) const;
 
  private:
+  // The public constructors' checks, then build(rest, cache).
+  ShapeBlender(const TetMesh& rest, const std::vector<Vertices>& examples,
+               const ShapeBlenderOptions& options, BlendCache* cache);
+  // Factor the stitch and parametrise the methods
+  // side by side, each from `cache` where it fits (null: no cache).
+  void build(const TetMesh& rest, BlendCache* cache);
+  // The parametrisation of `method` for the examples on `rest` (the
+  // stitch's mesh): what prepare() stores.
+  std::unique_ptr<TetMapBlender> parametrise(const TetMesh& rest, BlendMethod method) const;
+
   std::vector<Vertices> examples_;  // kept for vertex-linear and later prepare()
   ShapeBlenderOptions options_;
-  StitchSolver stitch_;
+  std::unique_ptr<StitchSolver> stitch_;  // set by the constructor
   Centroids restCentroids_;
   std::vector<Centroids> exampleCentroids_;
   std::map<BlendMethod, std::unique_ptr<TetMapBlender>> blenders_;

@@ -14,6 +14,7 @@
 #include <memory>
 #include <vector>
 
+#include "tetblend/blending/blend_cache.h"
 #include "tetblend/blending/blend_method.h"
 #include "tetblend/blending/tet_maps.h"
 #include "tetblend/core/mesh_types.h"
@@ -86,6 +87,11 @@ class StitchSolver {
   /// and factors G^T W G. Throws InputError for a rest tet with volume <= 0
   /// and NumericalError if the factorisation fails.
   explicit StitchSolver(const TetMesh& rest, const StitchOptions& options = {});
+  /// The solver of `rest` with the factor another solver of the same rest
+  /// gave by factorData() (supernodal backend; nothing is factored). Throws
+  /// InputError for a rest tet with volume <= 0, a factor whose structure
+  /// does not fit the rest's free vertices, or a build without CHOLMOD.
+  StitchSolver(const TetMesh& rest, StitchFactorData factor);
   ~StitchSolver();
   StitchSolver(StitchSolver&&) noexcept;
   StitchSolver& operator=(StitchSolver&&) noexcept;
@@ -108,6 +114,9 @@ class StitchSolver {
   /// Stored entries of the Cholesky factor (8 bytes each, plus a few percent
   /// of indices; each solve reads them twice).
   double factorNonzeros() const;
+  /// The factor's arrays, for the constructor above. Throws InputError for
+  /// the SimplicialLDLT backend.
+  StitchFactorData factorData() const;
   /// Heap bytes the solver holds between solves: the factor (values and
   /// indices), the rest mesh and the per-vertex index arrays (exact for the
   /// supernodal backend, the stored arrays' sizes for SimplicialLDLT).

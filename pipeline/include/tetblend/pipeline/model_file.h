@@ -2,8 +2,9 @@
 // The prepared-model file written by `tetblend prepare` and read by every
 // other subcommand: the compatible tet meshes of one example set, so that
 // blending a thousand weight vectors costs one load, not a thousand
-// tetrahedralisations. (Parametrisation and the stitch factorisation are
-// cheap next to TetGen and are redone on load.)
+// tetrahedralisations. Parametrisation and the stitch factorisation are
+// cheap next to TetGen and are redone on load, unless the model keeps them
+// (a blend cache, `tetblend prepare --fast-load`: larger file, faster load).
 //
 // Binary layout, all integers little-endian, doubles IEEE-754 binary64 LE:
 //   8 bytes   magic "TBMODEL\0"
@@ -15,27 +16,36 @@
 //             rest source name, then one per example (u64 length + bytes);
 //             version 2 on: u64 #X excluded tets, then #X i32 tet indices;
 //             version 3 on: u64 #U input vertices (0: the surface vertices
-//             are the input's), then #U i32 rows (ModelData::inputVertexRows)
-//   u64       FNV-1a 64 hash of the payload bytes
+//             are the input's), then #U i32 rows (ModelData::inputVertexRows);
+//             version 4 on: u64 1 if a blend cache follows, else 0; the cache
+//             (blend_cache.h) is the factor's perm, super, rowStart, rows (i32
+//             arrays), valueStart (i64), values (f64), then the kaji data's
+//             u64 tets, examples, rotationConsistency (0 or 1), params (f64),
+//             correctedTets, correctionStart, correctionExample (i32),
+//             corrections (f64); each array is a u64 count and its values
+//   u64       checksum of the payload bytes (modelChecksum)
 // A file with another magic, another version, a wrong size or a wrong hash is
 // refused with an InputError that says which and what to do.
 
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "tetblend/blending/blend_cache.h"
 #include "tetblend/core/mesh_types.h"
 
 namespace tetblend {
 
-/// Version of the layout above; bump on any change of the payload. Version 1
-/// and 2 files (no excluded tets; no input vertex rows) are still read.
-constexpr std::uint32_t kModelFormatVersion = 3;
+/// Version of the layout above; bump on any change of the payload. Version
+/// 1, 2 and 3 files (no excluded tets; no input vertex rows; no blend cache)
+/// are still read.
+constexpr std::uint32_t kModelFormatVersion = 4;
 
 /// What a model file holds.
 struct ModelData {
-  TetMesh rest;                             ///< rest tet mesh; surface vertices first
+  TetMesh rest;  ///< rest tet mesh; surface vertices first
   /// The rest surface's faces as the input has them: indices into the
   /// input's vertices (inputVertexCount()).
   Triangles surfaceTriangles;
@@ -51,6 +61,12 @@ struct ModelData {
   /// one row (seam_welding.h). Empty when the input's vertices are the
   /// surface vertices themselves (row i is input vertex i).
   std::vector<int> inputVertexRows;
+  /// The stitch factor and kaji parameters of the model's blender
+  /// (makeBlender), if kept: blenders then start from them.
+  std::optional<BlendCache> blendCache;
+  /// The format version of the file it was read from (readModelFile); a
+  /// model made in memory is written as kModelFormatVersion.
+  std::uint32_t formatVersion = kModelFormatVersion;
 
   /// Vertices of the input surface (and of every blended surface written).
   Eigen::Index inputVertexCount() const;
@@ -62,6 +78,16 @@ struct ModelData {
 /// FNV-1a 64-bit hash of `size` bytes, continuing from `hash`.
 std::uint64_t fnv1a64(const unsigned char* data, std::size_t size,
                       std::uint64_t hash = 0xcbf29ce484222325ULL);
+
+/// FNV-1a's step over the little-endian 64-bit words of `data` (the last
+/// size % 8 bytes byte by byte): eight times faster than fnv1a64, and a
+/// change of any one word still changes it (each step is invertible).
+std::uint64_t fnv1a64Words(const unsigned char* data, std::size_t size);
+
+/// The checksum a model file of format `version` stores after its payload:
+/// fnv1a64 up to version 3, fnv1a64Words from version 4 (a blend cache can
+/// be hundreds of megabytes).
+std::uint64_t modelChecksum(const unsigned char* payload, std::size_t size, std::uint32_t version);
 
 /// Checks the internal consistency of `model` (index ranges, shapes); throws
 /// InputError naming `what` (a file name) on the first problem.
