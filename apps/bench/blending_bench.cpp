@@ -57,6 +57,7 @@
 #include <utility>
 #include <vector>
 
+#include "bench_options.h"
 #include "tetblend/blending/shape_blender.h"
 #include "tetblend/core/constants.h"
 #include "tetblend/meshing/procedural_shapes.h"
@@ -134,8 +135,8 @@ std::pair<TetMesh, std::vector<Vertices>> boxBar(int n) {
   const double length = 2.6;
   TetMesh rest = boxTetMesh(n, n, nz, Eigen::Vector3d(1.0, 1.0, length));
   std::vector<Vertices> examples =
-      threeExamples(rest.vertices, Eigen::Vector3d(0.0, 0.0, -length / 2),
-                    Eigen::Vector3d::UnitZ(), Eigen::Vector3d::UnitX(), length);
+      threeExamples(rest.vertices, Eigen::Vector3d(0.0, 0.0, -length / 2), Eigen::Vector3d::UnitZ(),
+                    Eigen::Vector3d::UnitX(), length);
   return {std::move(rest), std::move(examples)};
 }
 
@@ -285,18 +286,7 @@ void registerTetGenRows() {
 }  // namespace tetblend
 
 int main(int argc, char** argv) {
-  int kept = 1;
-  for (int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i];
-    if (arg.rfind("--surface=", 0) == 0) {
-      tetblend::surfacePath() = arg.substr(10);
-    } else if (arg == "--surface" && i + 1 < argc) {
-      tetblend::surfacePath() = argv[++i];
-    } else {
-      argv[kept++] = argv[i];
-    }
-  }
-  argc = kept;
+  tetblend::surfacePath() = tetblend::bench::takeOption(argc, argv, "surface");
   if (!tetblend::surfacePath().empty()) tetblend::registerTetGenRows();
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;

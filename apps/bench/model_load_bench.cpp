@@ -23,6 +23,7 @@
 #include <string>
 #include <vector>
 
+#include "bench_options.h"
 #include "tetblend/pipeline/blended_shape.h"
 #include "tetblend/pipeline/make_blender.h"
 #include "tetblend/pipeline/model_file.h"
@@ -86,18 +87,7 @@ void coldStartBenchmark(benchmark::State& state) {
 }  // namespace tetblend
 
 int main(int argc, char** argv) {
-  int kept = 1;
-  for (int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i];
-    if (arg.rfind("--model=", 0) == 0) {
-      tetblend::modelPath() = arg.substr(8);
-    } else if (arg == "--model" && i + 1 < argc) {
-      tetblend::modelPath() = argv[++i];
-    } else {
-      argv[kept++] = argv[i];
-    }
-  }
-  argc = kept;
+  tetblend::modelPath() = tetblend::bench::takeOption(argc, argv, "model");
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
   if (tetblend::modelPath().empty()) {
