@@ -12,6 +12,7 @@
 #include "model.h"
 #include "numpy_arrays.h"
 #include "tetblend/pipeline/blended_shape.h"
+#include "tetblend/pipeline/make_blender.h"
 
 namespace py = pybind11;
 
@@ -92,11 +93,25 @@ void bindModel(py::module_& m) {
           "Where each example came from.")
       .def(
           "save",
-          [](const Model& model, const std::string& path) {
+          [](const Model& model, const std::string& path, std::optional<bool> fastLoad) {
             py::gil_scoped_release release;
-            writeModelFile(path, model.data());
+            if (!fastLoad || *fastLoad == model.data().blendCache.has_value()) {
+              writeModelFile(path, model.data());
+              return;
+            }
+            ModelData data = model.data();
+            if (*fastLoad) {
+              data.blendCache = blendCacheOf(data);
+            } else {
+              data.blendCache.reset();
+            }
+            writeModelFile(path, data);
           },
-          py::arg("path"), "Writes the model file (the format of 'tetblend prepare'), atomically.")
+          py::arg("path"), py::kw_only(), py::arg("fast_load") = py::none(),
+          "Writes the model file (the format of 'tetblend prepare'), atomically. fast_load:\n"
+          "True also keeps the stitch factor and the kaji parameters in it, as 'tetblend\n"
+          "prepare --fast-load' (a file several times larger that loads in a fraction of the\n"
+          "time); False leaves them out; None (default) keeps them if the model has them.")
       .def(
           "blend",
           [](const Model& model, py::handle weights, const std::string& method, bool consistency,

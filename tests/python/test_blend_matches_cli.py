@@ -44,6 +44,19 @@ def test_save_and_load_round_trip(bar_model, tmp_path):
     assert again.example_sources == model.example_sources
 
 
+def test_fast_load_keeps_the_factor_and_blends_the_same(bar_model, tmp_path):
+    model = tetblend.load(str(bar_model))
+    fast, plain = tmp_path / "fast.tbm", tmp_path / "plain.tbm"
+    model.save(str(fast), fast_load=True)
+    assert fast.stat().st_size > bar_model.stat().st_size
+    loaded = tetblend.load(str(fast))
+    for method in ("kaji", "dq"):
+        assert np.array_equal(loaded.blend([0.5, 0.25], method=method),
+                              model.blend([0.5, 0.25], method=method))
+    loaded.save(str(plain), fast_load=False)
+    assert plain.read_bytes() == bar_model.read_bytes()
+
+
 def test_quality_arrays_are_per_tet(bar_model):
     model = tetblend.load(str(bar_model))
     vertices, cells = model.blend_with_quality([0.5, 0.0])
