@@ -88,10 +88,12 @@ void inspectModel(const std::string& path) {
               m.surfaceVertexCount, static_cast<long long>(m.rest.tets.rows()),
               static_cast<long long>(m.surfaceTriangles.rows()));
   if (!m.inputVertexRows.empty()) {
+    const auto loose = std::count_if(m.inputVertexRows.begin(), m.inputVertexRows.end(),
+                                     [&](int row) { return row >= m.surfaceVertexCount; });
     std::printf(
-        "  input surface: %lld vertices (copies along texture or normal seams merged "
-        "for the tets)\n",
-        static_cast<long long>(m.inputVertexCount()));
+        "  input surface: %lld vertices (copies along texture or normal seams merged for the "
+        "tets; %lld used by no face, kept beside the tets)\n",
+        static_cast<long long>(m.inputVertexCount()), static_cast<long long>(loose));
   }
   if (m.blendCache) {
     std::printf(

@@ -328,9 +328,10 @@ void checkModel(const ModelData& m, const std::string& what) {
                          std::to_string(m.rest.tets(i, c)) + " of " + std::to_string(nv));
   for (std::size_t i = 0; i < m.inputVertexRows.size(); ++i) {
     const int row = m.inputVertexRows[i];
-    if (row < 0 || row >= m.surfaceVertexCount) {
+    if (row < 0 || row >= nv) {
       throw InputError(what + ": input vertex " + std::to_string(i) + " is on row " +
-                       std::to_string(row) + ", not a surface vertex; re-run 'tetblend prepare'");
+                       std::to_string(row) + " of " + std::to_string(nv) +
+                       "; re-run 'tetblend prepare'");
     }
   }
   const Eigen::Index inputVertices = m.inputVertexCount();

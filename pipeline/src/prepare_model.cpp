@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "loose_vertices.h"
+#include "meshed_rest.h"
 #include "tetblend/core/error.h"
 #include "tetblend/core/tet_geometry.h"
 #include "tetblend/meshing/example_aware_tets.h"
@@ -15,7 +17,6 @@
 #include "tetblend/meshing/tetgen_mesher.h"
 #include "tetblend/meshing/tetrisation.h"
 #include "tetblend/pipeline/format_number.h"
-#include "meshed_rest.h"
 
 namespace tetblend {
 namespace {
@@ -70,15 +71,14 @@ std::string separatedRestWarning(const std::string& restName, const MeshedRest& 
                                  const TetMesh& tets, const CompatibleTetResult& embedded) {
   const Vertices& v = meshed.surface.vertices;
   const double diagonal = (v.colwise().maxCoeff() - v.colwise().minCoeff()).norm();
-  std::string line = restName + ": its surface intersects itself at " +
-                     std::to_string(meshed.intersectingPairs) + " face pair" +
-                     (meshed.intersectingPairs > 1 ? "s" : "") + ", first faces " +
-                     std::to_string(meshed.firstPair.first) + " and " +
-                     std::to_string(meshed.firstPair.second) + "; the tets were made on a copy with " +
-                     std::to_string(meshed.movedVertices) + " vertices moved apart by at most " +
-                     threeDigits(meshed.largestDisplacement) + " (" +
-                     threeDigits(100.0 * meshed.largestDisplacement / diagonal) +
-                     " % of the bounding-box diagonal), and the rest is embedded in them";
+  std::string line =
+      restName + ": its surface intersects itself at " + std::to_string(meshed.intersectingPairs) +
+      " face pair" + (meshed.intersectingPairs > 1 ? "s" : "") + ", first faces " +
+      std::to_string(meshed.firstPair.first) + " and " + std::to_string(meshed.firstPair.second) +
+      "; the tets were made on a copy with " + std::to_string(meshed.movedVertices) +
+      " vertices moved apart by at most " + threeDigits(meshed.largestDisplacement) + " (" +
+      threeDigits(100.0 * meshed.largestDisplacement / diagonal) +
+      " % of the bounding-box diagonal), and the rest is embedded in them";
   if (embedded.invertedTets.empty()) return line + " with no tet inverted";
   return line + "; " + std::to_string(embedded.invertedTets.size()) +
          " tets of the rest cannot be embedded (worst volume ratio " +
@@ -170,6 +170,32 @@ ModelData tetrisedModel(const SurfaceMesh& rest, const std::vector<SurfaceMesh>&
   return model;
 }
 
+// prepareModel of the surfaces without the vertices no face uses, which the
+// model then keeps beside its tets (loose_vertices.h). A refusal's vertex
+// numbers count the surface without them, and the message says so.
+ModelData withLooseVertices(const SurfaceMesh& rest, const std::vector<SurfaceMesh>& examples,
+                            const std::string& restName,
+                            const std::vector<std::string>& exampleNames,
+                            const PrepareOptions& options, const PrepareMessages& messages) {
+  const WithoutLooseVertices stripped = withoutLooseVertices(rest, examples, exampleNames);
+  const std::size_t loose = stripped.loose.size();
+  const std::string count = std::to_string(loose) + (loose == 1 ? " vertex" : " vertices");
+  say(messages.note,
+      restName + ": " + count + (loose == 1 ? " is" : " are") + " used by no face (first: vertex " +
+          std::to_string(stripped.loose.front()) + "): " + (loose == 1 ? "it is" : "they are") +
+          " kept out of the tets and follow the examples linearly");
+  ModelData model;
+  try {
+    model =
+        prepareModel(stripped.rest, stripped.examples, restName, exampleNames, options, messages);
+  } catch (const InputError& error) {
+    throw InputError(std::string(error.what()) + " (vertex numbers count the surface without its " +
+                     count + " used by no face)");
+  }
+  keepLooseVertices(model, rest, examples, stripped.loose);
+  return model;
+}
+
 }  // namespace
 
 std::size_t prepareStepCount(std::size_t exampleCount) { return exampleCount + 2; }
@@ -190,6 +216,11 @@ ModelData prepareModel(const SurfaceMesh& rest, const std::vector<SurfaceMesh>& 
   if (exampleNames.size() != examples.size()) {
     throw InputError("prepare: " + std::to_string(exampleNames.size()) + " names given for " +
                      std::to_string(examples.size()) + " examples");
+  }
+  const bool indicesInRange = rest.triangles.size() > 0 && rest.triangles.minCoeff() >= 0 &&
+                              rest.triangles.maxCoeff() < rest.vertices.rows();
+  if (indicesInRange && !unreferencedVertices(rest).empty()) {
+    return withLooseVertices(rest, examples, restName, exampleNames, options, messages);
   }
   if (options.tetrise) {
     return tetrisedModel(rest, examples, restName, exampleNames, options, messages);

@@ -74,7 +74,8 @@ void bindModel(py::module_& m) {
             return intArray(rows);
           },
           "int32 (u,): per input surface vertex, its row of rest_vertices and of every\n"
-          "blend; copies of a vertex split along a texture or normal seam share a row.\n"
+          "blend; copies of a vertex split along a texture or normal seam share a row, and a\n"
+          "vertex no face uses has a row after the tets' vertices (blended linearly).\n"
           "blend(w)[surface_vertex_rows] with surface_triangles is the blended surface.")
       .def_property_readonly(
           "examples", [](const Model& model) { return model.data().examples; },

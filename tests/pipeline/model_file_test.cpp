@@ -126,7 +126,7 @@ TEST(ModelFile, InputVertexRowsRoundTripAndGiveTheInputsVertices) {
   }
   EXPECT_TRUE(oneTetModel().inputVertices(r.examples[0]) == r.examples[0]);
 
-  m.inputVertexRows[4] = 4;  // not a surface vertex (there are 4)
+  m.inputVertexRows[4] = 4;  // not a row (there are 4)
   EXPECT_THROW(writeModelFile(path, m), InputError);
   m.inputVertexRows = {0, 1, 2, 3, 1};  // a triangle then refers to input vertex 5 of 5
   EXPECT_THROW(writeModelFile(path, m), InputError);
