@@ -4,6 +4,7 @@
 #include <limits>
 
 #include "tetblend/core/error.h"
+#include "tetblend/meshing/degenerate_faces.h"
 #include "tetblend/meshing/seam_welding.h"
 #include "tetblend/meshing/self_intersection.h"
 #include "tetblend/meshing/surface_orientation.h"
@@ -64,10 +65,9 @@ void refuseTouchingRims(const SurfaceMesh& surface, const std::string& restName)
   SurfaceValidationOptions topology;
   topology.checkSelfIntersections = false;
   const SurfaceValidation checked = validateSurface(surface, restName, topology);
-  const bool open =
-      std::any_of(checked.problems.begin(), checked.problems.end(), [](const SurfaceProblem& p) {
-        return p.kind == SurfaceProblemKind::kBoundaryEdge;
-      });
+  const bool open = std::any_of(
+      checked.problems.begin(), checked.problems.end(),
+      [](const SurfaceProblem& p) { return p.kind == SurfaceProblemKind::kBoundaryEdge; });
   if (!open) return;
   throw InputError(restName + ": vertices " + std::to_string(a) + " and " + std::to_string(b) +
                    " are at the same position on the rims of its holes, which touch there (not "
@@ -121,14 +121,15 @@ MeshedRest meshedRest(const SurfaceMesh& rest, const std::string& restName,
   meshed.surface = closedSurface(oriented, restName, options, meshed.filling);
   orientWherePossible(meshed.surface);
   const Eigen::Index userFaces = rest.triangles.rows();
-  meshed.reorientedFaces = differingRows(meshed.surface.triangles.topRows(userFaces), rest.triangles);
+  meshed.reorientedFaces =
+      differingRows(meshed.surface.triangles.topRows(userFaces), rest.triangles);
+  meshed.flippedFaces = flipDegenerateFaces(meshed.surface, kDefaultZeroAreaRelTol).flipped;
 
   const SurfaceValidation checked = validateSurface(meshed.surface, restName);
   if (checked.ok()) return meshed;
-  const bool onlyIntersections =
-      std::all_of(checked.problems.begin(), checked.problems.end(), [](const SurfaceProblem& p) {
-        return p.kind == SurfaceProblemKind::kSelfIntersection;
-      });
+  const bool onlyIntersections = std::all_of(
+      checked.problems.begin(), checked.problems.end(),
+      [](const SurfaceProblem& p) { return p.kind == SurfaceProblemKind::kSelfIntersection; });
   if (!onlyIntersections || options.strict) {
     refuseCutFill(listedPairs(checked), userFaces, restName);
     requireValidRest(meshed.surface, restName);

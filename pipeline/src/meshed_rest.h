@@ -20,6 +20,8 @@ struct MeshedRest {
   SurfaceMesh surface;
   HoleFilling filling;
   int reorientedFaces = 0;  ///< user's faces meshed reversed
+  /// Degenerate faces flipped with a neighbour for meshing (degenerate_faces.h).
+  int flippedFaces = 0;
   /// The user's rest intersects itself: `surface` holds a separated copy
   /// (surface_separation.h), and the user's rest is embedded like a pose.
   bool separated = false;

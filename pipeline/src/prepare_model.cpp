@@ -234,6 +234,11 @@ ModelData prepareModel(const SurfaceMesh& rest, const std::vector<SurfaceMesh>& 
                               " faces point inwards or against their neighbours: they are meshed "
                               "reversed (the blended surfaces keep the input's faces)");
   }
+  if (meshed.flippedFaces > 0) {
+    say(messages.note, restName + ": " + std::to_string(meshed.flippedFaces) +
+                           " faces of (almost) zero area are re-split with a neighbour for "
+                           "meshing (the blended surfaces keep the input's faces)");
+  }
   checkExamples(rest, examples, restName, exampleNames, messages);
   ModelData model;
   model.surfaceTriangles = rest.triangles;

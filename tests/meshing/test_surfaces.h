@@ -16,9 +16,9 @@
 #include <utility>
 #include <vector>
 
+#include "test_seed.h"
 #include "tetblend/core/constants.h"
 #include "tetblend/core/mesh_types.h"
-#include "test_seed.h"
 
 namespace tetblend {
 namespace testing_surfaces {
@@ -107,6 +107,34 @@ inline SurfaceMesh reversed(SurfaceMesh m) {
   for (Eigen::Index f = 0; f < m.triangles.rows(); ++f)
     std::swap(m.triangles(f, 1), m.triangles(f, 2));
   return m;
+}
+
+/// Splits face f's edge corner k -> corner k+1 (a -> b, third corner x) at
+/// `points` points m1..mP along it: face f becomes the fan (a, m1, x), (m1,
+/// m2, x), ..., (mP, b, x), and the run is closed against the neighbour's
+/// b -> a by P faces of zero area (a, b, mP), (a, mP, mP-1), ..., (a, m2, m1),
+/// as a mesher leaves a T-junction.
+inline void insertCap(SurfaceMesh& mesh, int f, int k, int points) {
+  const int a = mesh.triangles(f, k), b = mesh.triangles(f, (k + 1) % 3);
+  const int x = mesh.triangles(f, (k + 2) % 3);
+  std::vector<int> run{a};
+  for (int i = 1; i <= points; ++i) {
+    const Eigen::Index row = mesh.vertices.rows();
+    mesh.vertices.conservativeResize(row + 1, 3);
+    const double s = static_cast<double>(i) / (points + 1);
+    mesh.vertices.row(row) = (1.0 - s) * mesh.vertices.row(a) + s * mesh.vertices.row(b);
+    run.push_back(static_cast<int>(row));
+  }
+  run.push_back(b);
+  std::vector<Eigen::RowVector3i> added;
+  mesh.triangles.row(f) << run[0], run[1], x;
+  for (int i = 1; i <= points; ++i) added.emplace_back(run[i], run[i + 1], x);
+  for (int i = points; i >= 1; --i) added.emplace_back(a, run[i + 1], run[i]);
+  const Eigen::Index first = mesh.triangles.rows();
+  mesh.triangles.conservativeResize(first + static_cast<Eigen::Index>(added.size()), 3);
+  for (std::size_t i = 0; i < added.size(); ++i) {
+    mesh.triangles.row(first + static_cast<Eigen::Index>(i)) = added[i];
+  }
 }
 
 /// Icosahedron subdivided `levels` times (each face into four; once: 42

@@ -1,0 +1,35 @@
+#pragma once
+// Degenerate faces of a closed surface, flipped away for meshing. Scans and
+// exporters leave faces of (almost) zero area: three vertices on one line,
+// the middle one a vertex of the faces along the line's other side. TetGen
+// cannot mesh such a face, and removing it per frame would break the
+// correspondence between the rest and the examples. Instead the face and its
+// neighbour across its longest edge are re-split along the other diagonal
+// (from the face's middle vertex to the neighbour's far vertex): the two new
+// faces split the neighbour, so the surface keeps its shape, its vertices
+// and its face count, and only the meshing sees the change (the blended
+// surfaces keep the input's faces).
+
+#include "tetblend/core/mesh_types.h"
+
+namespace tetblend {
+
+/// What flipDegenerateFaces did.
+struct DegenerateFaceFlips {
+  int flipped = 0;  ///< degenerate faces flipped away
+  int left = 0;     ///< degenerate faces no flip could remove (for the validation to name)
+};
+
+/// Flips every face of `mesh` whose area is below `zeroAreaRelTol` times the
+/// squared bounding-box diagonal (surface_validation.h's zero-area rule) and
+/// whose three vertices differ: with its neighbour across its longest edge
+/// u v, faces (u, v, c) and (v, u, d) become (u, d, c) and (d, v, c), in
+/// place (face numbers kept). A flip is skipped when the edge has no
+/// neighbour running it the other way (a boundary or an inconsistent
+/// orientation), when the edge c d exists already (it would become
+/// non-manifold), or when a new face would be degenerate too; a face is
+/// tried again after its neighbours change, so runs of collinear faces
+/// resolve one by one.
+DegenerateFaceFlips flipDegenerateFaces(SurfaceMesh& mesh, double zeroAreaRelTol);
+
+}  // namespace tetblend

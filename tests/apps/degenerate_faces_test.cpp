@@ -1,0 +1,49 @@
+// End to end: a rest and an example with faces of zero area (T-junctions
+// closed by caps, as scanners and CAD exporters leave them) are prepared:
+// the caps are re-split with a neighbour for meshing only, and blends keep
+// the input's faces and reproduce the rest and the example at every vertex.
+
+#include "apps_test_support.h"
+#include "test_surfaces.h"
+
+namespace tetblend::apps_test {
+namespace {
+
+// The bar with a cap on faces 0, 50 and 100 (three points on one edge of
+// face 100): the same faces in the rest and in the example, the points at
+// the same fractions of the edge in each.
+SurfaceMesh withCaps(SurfaceMesh mesh) {
+  testing_surfaces::insertCap(mesh, 0, 0, 1);
+  testing_surfaces::insertCap(mesh, 50, 1, 1);
+  testing_surfaces::insertCap(mesh, 100, 2, 3);
+  return mesh;
+}
+
+TEST(DegenerateFaces, CappedRestAndExamplePrepareAndBlendExactly) {
+  const fs::path dir = scratchDir();
+  makeSamples(dir);
+  const SurfaceMesh rest = withCaps(readSurface((dir / "bar_rest.obj").string()));
+  const SurfaceMesh twist = withCaps(readSurface((dir / "bar_twist4pi.obj").string()));
+  writeSurface((dir / "rest.obj").string(), rest);
+  writeSurface((dir / "twist.obj").string(), twist);
+  const RunResult prepared =
+      tetblend({"prepare", (dir / "rest.obj").string(), (dir / "twist.obj").string(), "-o",
+                (dir / "m.tbm").string()},
+               dir);
+  ASSERT_EQ(prepared.code, 0) << prepared.err;
+  EXPECT_NE(prepared.err.find("5 faces of (almost) zero area are re-split with a neighbour"),
+            std::string::npos)
+      << prepared.err;
+  for (const auto& [w, expected] : {std::pair{"0", &rest}, std::pair{"1", &twist}}) {
+    const fs::path out = dir / (std::string("w") + w + ".vtp");
+    const RunResult r =
+        tetblend({"blend", (dir / "m.tbm").string(), "-w", w, "-o", out.string(), "--quiet"}, dir);
+    ASSERT_EQ(r.code, 0) << r.err;
+    const auto surface = readVtp(out);
+    EXPECT_LT(maxDistance(pointsOf(surface), expected->vertices), kInterpolationTolerance) << w;
+    EXPECT_EQ(surface->GetNumberOfCells(), expected->triangles.rows()) << w;
+  }
+}
+
+}  // namespace
+}  // namespace tetblend::apps_test
