@@ -4,7 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "loose_vertices.h"
+#include "meshable_input.h"
 #include "meshed_rest.h"
 #include "tetblend/core/error.h"
 #include "tetblend/core/tet_geometry.h"
@@ -170,29 +170,46 @@ ModelData tetrisedModel(const SurfaceMesh& rest, const std::vector<SurfaceMesh>&
   return model;
 }
 
-// prepareModel of the surfaces without the vertices no face uses, which the
-// model then keeps beside its tets (loose_vertices.h). A refusal's vertex
-// numbers count the surface without them, and the message says so.
-ModelData withLooseVertices(const SurfaceMesh& rest, const std::vector<SurfaceMesh>& examples,
-                            const std::string& restName,
-                            const std::vector<std::string>& exampleNames,
-                            const PrepareOptions& options, const PrepareMessages& messages) {
-  const WithoutLooseVertices stripped = withoutLooseVertices(rest, examples, exampleNames);
-  const std::size_t loose = stripped.loose.size();
-  const std::string count = std::to_string(loose) + (loose == 1 ? " vertex" : " vertices");
-  say(messages.note,
-      restName + ": " + count + (loose == 1 ? " is" : " are") + " used by no face (first: vertex " +
-          std::to_string(stripped.loose.front()) + "): " + (loose == 1 ? "it is" : "they are") +
-          " kept out of the tets and follow the examples linearly");
+// prepareModel of the surfaces without the faces that repeat a vertex and
+// the vertices no face uses, which the model then gets back
+// (meshable_input.h). A refusal's numbers count the surface without them,
+// and the message says so.
+ModelData withoutUnmeshableParts(const SurfaceMesh& rest, const std::vector<SurfaceMesh>& examples,
+                                 const std::string& restName,
+                                 const std::vector<std::string>& exampleNames,
+                                 const PrepareOptions& options, const PrepareMessages& messages) {
+  const MeshableInput input = meshableInput(rest, examples, exampleNames);
+  const auto plural = [](std::size_t n, const char* one, const char* many) {
+    return std::to_string(n) + " " + (n == 1 ? one : many);
+  };
+  std::vector<std::string> setAside;
+  if (!input.droppedFaces.empty()) {
+    const std::size_t n = input.droppedFaces.size();
+    say(messages.note, restName + ": " + plural(n, "face repeats", "faces repeat") +
+                           " a vertex (first: face " + std::to_string(input.droppedFaces.front()) +
+                           "), covering nothing: left out of the meshing (the blended surfaces "
+                           "keep the input's faces)");
+    setAside.push_back(plural(n, "face that repeats", "faces that repeat") + " a vertex");
+  }
+  if (!input.loose.empty()) {
+    const std::size_t n = input.loose.size();
+    say(messages.note, restName + ": " + plural(n, "vertex is", "vertices are") +
+                           " used by no face (first: vertex " +
+                           std::to_string(input.loose.front()) +
+                           "): " + (n == 1 ? "it is" : "they are") +
+                           " kept out of the tets and follow the examples linearly");
+    setAside.push_back(plural(n, "vertex", "vertices") + " used by no face");
+  }
   ModelData model;
   try {
-    model =
-        prepareModel(stripped.rest, stripped.examples, restName, exampleNames, options, messages);
+    model = prepareModel(input.rest, input.examples, restName, exampleNames, options, messages);
   } catch (const InputError& error) {
-    throw InputError(std::string(error.what()) + " (vertex numbers count the surface without its " +
-                     count + " used by no face)");
+    std::string without = setAside.front();
+    if (setAside.size() > 1) without += " and its " + setAside.back();
+    throw InputError(std::string(error.what()) +
+                     " (vertex and face numbers count the surface without its " + without + ")");
   }
-  keepLooseVertices(model, rest, examples, stripped.loose);
+  restoreInput(model, rest, examples, input);
   return model;
 }
 
@@ -219,8 +236,8 @@ ModelData prepareModel(const SurfaceMesh& rest, const std::vector<SurfaceMesh>& 
   }
   const bool indicesInRange = rest.triangles.size() > 0 && rest.triangles.minCoeff() >= 0 &&
                               rest.triangles.maxCoeff() < rest.vertices.rows();
-  if (indicesInRange && !unreferencedVertices(rest).empty()) {
-    return withLooseVertices(rest, examples, restName, exampleNames, options, messages);
+  if (indicesInRange && hasUnmeshableParts(rest)) {
+    return withoutUnmeshableParts(rest, examples, restName, exampleNames, options, messages);
   }
   if (options.tetrise) {
     return tetrisedModel(rest, examples, restName, exampleNames, options, messages);

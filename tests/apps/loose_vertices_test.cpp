@@ -1,8 +1,9 @@
 // End to end: a rest and examples with vertices that no face uses (an
-// exporter's stray points, first and in the middle of the vertex list) are
-// prepared, with TetGen and tetrised; the blended surfaces keep every input
-// vertex: the faces' vertices reproduce the rest and each example, and the
-// loose vertices follow the examples linearly.
+// exporter's stray points, first and in the middle of the vertex list; the
+// last one used only by a face that repeats a vertex, as a triangle strip
+// leaves) are prepared, with TetGen and tetrised; the blended surfaces keep
+// every input vertex and face: the faces' vertices reproduce the rest and
+// each example, and the loose vertices follow the examples linearly.
 
 #include "apps_test_support.h"
 
@@ -34,7 +35,11 @@ SurfaceMesh withStrayVertices(const SurfaceMesh& mesh, const Eigen::RowVector3d&
       newIndex.push_back(static_cast<int>(row));
     }
   }
-  out.triangles = mesh.triangles.unaryExpr([&](int v) { return newIndex[v]; });
+  out.triangles.resize(mesh.triangles.rows() + 1, 3);
+  out.triangles.topRows(mesh.triangles.rows()) =
+      mesh.triangles.unaryExpr([&](int v) { return newIndex[v]; });
+  // A strip's degenerate face: the last stray vertex twice and a bar vertex.
+  out.triangles.bottomRows(1) << strayIndices().back(), strayIndices().back(), newIndex[0];
   return out;
 }
 
@@ -63,6 +68,10 @@ TEST_P(LooseVertices, ArePreparedAndFollowTheExamplesLinearly) {
   EXPECT_NE(prepared.err.find("3 vertices are used by no face (first: vertex 0)"),
             std::string::npos)
       << prepared.err;
+  EXPECT_NE(prepared.err.find("1 face repeats a vertex (first: face " +
+                              std::to_string(rest_.triangles.rows() - 1) + ")"),
+            std::string::npos)
+      << prepared.err;
   for (const double w : {0.0, 0.5, 1.0}) {
     const fs::path out = dir_ / ("w" + std::to_string(w) + ".vtp");
     const RunResult r = tetblend({"blend", (dir_ / "m.tbm").string(), "-w", std::to_string(w), "-o",
@@ -71,6 +80,7 @@ TEST_P(LooseVertices, ArePreparedAndFollowTheExamplesLinearly) {
     ASSERT_EQ(r.code, 0) << r.err;
     const Vertices blended = pointsOf(readVtp(out));
     ASSERT_EQ(blended.rows(), rest_.vertices.rows());
+    EXPECT_EQ(readVtp(out)->GetNumberOfCells(), rest_.triangles.rows());
     // Every vertex: a face's vertex exactly at the rest (w 0) and the
     // example (w 1) up to the stitch's round-off; a loose one at the linear
     // blend (round-off of one multiply-add).

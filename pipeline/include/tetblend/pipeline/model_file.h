@@ -59,7 +59,7 @@ struct ModelData {
   /// Per input surface vertex, its row of rest.vertices (and of every
   /// blend): copies of a vertex split along a texture or normal seam share
   /// one row (seam_welding.h); a vertex no face uses has a row of its own
-  /// after the tet mesh's, in no tet (loose_vertices.h). Empty when the
+  /// after the tet mesh's, in no tet (meshable_input.h). Empty when the
   /// input's vertices are the surface vertices themselves (row i is input
   /// vertex i).
   std::vector<int> inputVertexRows;
