@@ -8,6 +8,7 @@
 #include "cli_common.h"
 #include "commands.h"
 #include "prepare_options.h"
+#include "tetblend/core/error.h"
 #include "tetblend/pipeline/make_blender.h"
 #include "tetblend/pipeline/model_file.h"
 
@@ -23,6 +24,30 @@ struct PrepareArgs {
   bool fastLoad = false;
 };
 
+// --fast-load: the stitch factor and the kaji parameters kept in the model.
+// A model whose cache cannot be made (say, its factorisation exceeds a memory
+// limit) is still written, without it, so the preparation is not lost.
+void addBlendCache(ModelData& model, const std::string& output, bool quiet) {
+  try {
+    model.blendCache = blendCacheOf(model);
+  } catch (const Error& error) {
+    printWarning(output + ": --fast-load: " + error.what() +
+                 "; the model is written without its blend cache (it loads as a model prepared "
+                 "without --fast-load)");
+    return;
+  }
+  const auto megabytes = [](std::size_t doubles) {
+    std::ostringstream text;
+    text << std::fixed << std::setprecision(1) << 8.0 * static_cast<double>(doubles) / (1 << 20);
+    return text.str();
+  };
+  printNote("fast load: the model keeps the stitch factor (" +
+                megabytes(model.blendCache->factor.values.size()) +
+                " MB) and the kaji parameters (" + megabytes(model.blendCache->kaji.params.size()) +
+                " MB)",
+            quiet);
+}
+
 void runPrepare(const PrepareArgs& a) {
   std::vector<std::string> inputs = a.examples;
   inputs.push_back(a.rest);
@@ -32,19 +57,7 @@ void runPrepare(const PrepareArgs& a) {
   messages.warning = printWarning;
   messages.note = [&](const std::string& line) { printNote(line, a.settings.quiet); };
   ModelData model = prepareWithProgress(a.rest, a.examples, a.settings, messages);
-  if (a.fastLoad) {
-    model.blendCache = blendCacheOf(model);
-    const auto megabytes = [](std::size_t doubles) {
-      std::ostringstream text;
-      text << std::fixed << std::setprecision(1) << 8.0 * static_cast<double>(doubles) / (1 << 20);
-      return text.str();
-    };
-    printNote("fast load: the model keeps the stitch factor (" +
-                  megabytes(model.blendCache->factor.values.size()) +
-                  " MB) and the kaji parameters (" +
-                  megabytes(model.blendCache->kaji.params.size()) + " MB)",
-              a.settings.quiet);
-  }
+  if (a.fastLoad) addBlendCache(model, a.output, a.settings.quiet);
   writeModelFile(a.output, model);
 }
 

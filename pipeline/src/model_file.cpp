@@ -43,7 +43,10 @@ class ByteWriter {
     static_assert(sizeof(T) == 4 || sizeof(T) == 8, "i32, i64 or f64 values");
     u64(values.size());
     if constexpr (kLittleEndianHost) {
-      raw(reinterpret_cast<const unsigned char*>(values.data()), sizeof(T) * values.size());
+      // An empty vector's data() may be null, which memcpy must not get.
+      if (!values.empty()) {
+        raw(reinterpret_cast<const unsigned char*>(values.data()), sizeof(T) * values.size());
+      }
     } else {
       for (const T& v : values) {
         std::uint64_t bits = 0;
@@ -106,7 +109,7 @@ class ByteReader {
     requireRoom(n, sizeof(T), what);
     std::vector<T> values(n);
     if constexpr (kLittleEndianHost) {
-      std::memcpy(values.data(), data_ + pos_, sizeof(T) * n);
+      if (n > 0) std::memcpy(values.data(), data_ + pos_, sizeof(T) * n);  // data() may be null
       pos_ += sizeof(T) * n;
     } else {
       for (T& v : values) {
