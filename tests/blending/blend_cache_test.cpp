@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include "blending_test_support.h"
 #include "tetblend/blending/shape_blender.h"
 #include "tetblend/core/constants.h"
 #include "tetblend/core/error.h"
@@ -13,23 +14,11 @@
 namespace tetblend {
 namespace {
 
-struct Fixture {
-  TetMesh rest;
-  std::vector<Vertices> examples;
-};
+using Fixture = testing::BarExamples;
 
-// A 1 x 1 x 3 bar twisted by 4 pi (the rotation lifts need corrections where
-// the twist passes whole turns) and bent by 60 degrees.
-Fixture twistedBar() {
-  Fixture f;
-  f.rest = boxTetMesh(2, 2, 24, Eigen::Vector3d(1.0, 1.0, 3.0));
-  const Eigen::Vector3d base(0.0, 0.0, -1.5);
-  f.examples.push_back(
-      twistAboutAxis(f.rest.vertices, base, Eigen::Vector3d::UnitZ(), 4.0 * kPi, 3.0));
-  f.examples.push_back(bendAboutAxis(f.rest.vertices, base, Eigen::Vector3d::UnitZ(),
-                                     Eigen::Vector3d::UnitX(), kPi / 3.0, 3.0));
-  return f;
-}
+// The bar twisted by 4 pi (the rotation lifts need corrections where the
+// twist passes whole turns) and bent.
+Fixture twistedBar() { return testing::twistedAndBentBar(24, 4.0 * kPi); }
 
 ShapeBlenderOptions optionsFor(std::vector<BlendMethod> methods, bool consistency = true) {
   ShapeBlenderOptions options;

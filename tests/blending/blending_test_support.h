@@ -9,8 +9,10 @@
 #include <random>
 #include <string>
 
-#include "tetblend/core/mesh_types.h"
 #include "test_seed.h"
+#include "tetblend/core/constants.h"
+#include "tetblend/core/mesh_types.h"
+#include "tetblend/meshing/procedural_shapes.h"
 
 namespace tetblend::testing {
 
@@ -31,6 +33,24 @@ inline Vertices smoothWarp(const Vertices& v, double amplitude, std::mt19937& rn
     out(i, 2) += amplitude * std::sin(0.8 * x + c) * std::cos(1.2 * y);
   }
   return out;
+}
+
+/// A rest tet mesh and its examples.
+struct BarExamples {
+  TetMesh rest;
+  std::vector<Vertices> examples;
+};
+
+/// A 1 x 1 x 3 box bar (2 x 2 x `layers` cubes of 6 tets) and two examples:
+/// twisted by `twist` radians about its long axis, and bent by 60 degrees.
+inline BarExamples twistedAndBentBar(int layers, double twist) {
+  BarExamples f;
+  f.rest = boxTetMesh(2, 2, layers, Eigen::Vector3d(1.0, 1.0, 3.0));
+  const Eigen::Vector3d base(0.0, 0.0, -1.5);
+  f.examples.push_back(twistAboutAxis(f.rest.vertices, base, Eigen::Vector3d::UnitZ(), twist, 3.0));
+  f.examples.push_back(bendAboutAxis(f.rest.vertices, base, Eigen::Vector3d::UnitZ(),
+                                     Eigen::Vector3d::UnitX(), kPi / 3.0, 3.0));
+  return f;
 }
 
 }  // namespace tetblend::testing

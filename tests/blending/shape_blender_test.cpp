@@ -29,21 +29,12 @@ double maxRowDistance(const Vertices& a, const Vertices& b) {
   return (a - b).rowwise().norm().maxCoeff();
 }
 
-struct Fixture {
-  TetMesh rest;
-  std::vector<Vertices> examples;
-};
+using Fixture = testing::BarExamples;
 
 // A 1 x 1 x 3 bar with three examples: twisted by 3 pi / 4, bent by 60
 // degrees, and warped then moved away (every example tet stays positive).
 Fixture barFixture(std::mt19937& rng) {
-  Fixture f;
-  f.rest = boxTetMesh(2, 2, 6, Eigen::Vector3d(1.0, 1.0, 3.0));
-  const Eigen::Vector3d base(0.0, 0.0, -1.5);
-  f.examples.push_back(
-      twistAboutAxis(f.rest.vertices, base, Eigen::Vector3d::UnitZ(), 0.75 * kPi, 3.0));
-  f.examples.push_back(bendAboutAxis(f.rest.vertices, base, Eigen::Vector3d::UnitZ(),
-                                     Eigen::Vector3d::UnitX(), kPi / 3.0, 3.0));
+  Fixture f = testing::twistedAndBentBar(6, 0.75 * kPi);
   f.examples.push_back(testing::smoothWarp(f.rest.vertices, 0.1, rng).rowwise() +
                        Eigen::RowVector3d(0.3, -0.2, 1.0));
   return f;
