@@ -64,12 +64,13 @@ DegenerateFaceFlips flipDegenerateFaces(SurfaceMesh& mesh, double zeroAreaRelTol
   const auto degenerate = [&](const Eigen::RowVector3i& t) {
     return t(0) != t(1) && t(1) != t(2) && t(0) != t(2) && area(t(0), t(1), t(2)) < minArea;
   };
-  EdgeFaces edges(mesh.triangles);
   std::vector<int> pending;
   for (Eigen::Index f = mesh.triangles.rows() - 1; f >= 0; --f) {
     if (degenerate(mesh.triangles.row(f))) pending.push_back(static_cast<int>(f));
   }
   DegenerateFaceFlips result;
+  if (pending.empty()) return result;  // the usual case: no edge index needed
+  EdgeFaces edges(mesh.triangles);
   // Each pass tries every pending face once; a flip can make a skipped face
   // flippable, so passes repeat while they flip something.
   for (bool progress = true; progress && !pending.empty();) {
