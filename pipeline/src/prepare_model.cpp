@@ -195,9 +195,10 @@ ModelData withoutUnmeshableParts(const SurfaceMesh& rest, const std::vector<Surf
     const std::size_t n = input.loose.size();
     say(messages.note, restName + ": " + plural(n, "vertex is", "vertices are") +
                            " used by no face (first: vertex " +
-                           std::to_string(input.loose.front()) +
-                           "): " + (n == 1 ? "it is" : "they are") +
-                           " kept out of the tets and follow the examples linearly");
+                           std::to_string(input.loose.front()) + "): " +
+                           (n == 1 ? "it is kept out of the tets and follows"
+                                   : "they are kept out of the tets and follow") +
+                           " the examples linearly");
     setAside.push_back(plural(n, "vertex", "vertices") + " used by no face");
   }
   ModelData model;
