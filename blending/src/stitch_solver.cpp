@@ -25,15 +25,8 @@ StitchSolver::StitchSolver(const TetMesh& rest, const StitchOptions& options)
     : impl_(std::make_unique<Impl>()) {
   Impl& m = *impl_;
   stitch_detail::SparseMatrix matrix;
-  {
-    // Checks the rest tets first (InputError); freed once the matrix is built.
-    const RestTetData data = restTetData(rest);
-    m.rest = rest;
-    m.buildComponents(static_cast<int>(rest.vertices.rows()));
-    m.buildChunks();
-    matrix = m.reducedNormalMatrix(data);
-    std::vector<int>().swap(m.reducedIndex);  // only needed to build the matrix
-  }
+  matrix = m.reducedNormalMatrix(m.setUp(rest));  // the rest data is freed after
+  std::vector<int>().swap(m.reducedIndex);        // only needed to build the matrix
 #ifdef TETBLEND_HAVE_CHOLMOD
   if (options.backend == StitchBackend::kCholmodSupernodal && matrix.rows() > 0) {
     m.backend = StitchBackend::kCholmodSupernodal;
@@ -50,10 +43,7 @@ StitchSolver::StitchSolver(const TetMesh& rest, const StitchOptions& options)
 StitchSolver::StitchSolver(const TetMesh& rest, StitchFactorData factor)
     : impl_(std::make_unique<Impl>()) {
   Impl& m = *impl_;
-  restTetData(rest);  // the same InputError as a factoring solver's for a bad rest tet
-  m.rest = rest;
-  m.buildComponents(static_cast<int>(rest.vertices.rows()));
-  m.buildChunks();
+  m.setUp(rest);  // the same InputError as a factoring solver's for a bad rest tet
   std::vector<int>().swap(m.reducedIndex);
 #ifdef TETBLEND_HAVE_CHOLMOD
   m.backend = StitchBackend::kCholmodSupernodal;

@@ -116,6 +116,16 @@ struct StitchSolver::Impl {
   }
 #endif
 
+  // Checks the rest tets (InputError), then keeps the mesh, its components
+  // and the right-hand side's chunks; returns the rest data the normal
+  // matrix is built from.
+  RestTetData setUp(const TetMesh& mesh) {
+    RestTetData data = restTetData(mesh);
+    rest = mesh;
+    buildComponents(static_cast<int>(mesh.vertices.rows()));
+    buildChunks();
+    return data;
+  }
   void buildComponents(int vertexCount) {
     std::vector<int> parent(vertexCount);
     std::iota(parent.begin(), parent.end(), 0);

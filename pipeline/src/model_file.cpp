@@ -2,7 +2,6 @@
 
 #include <cstring>
 #include <fstream>
-#include <iterator>
 
 #include "tetblend/core/error.h"
 #include "tetblend/meshing/atomic_file.h"
@@ -176,10 +175,8 @@ std::vector<unsigned char> encodePayload(const ModelData& m) {
   for (const Vertices& e : m.examples) writeVertices(w, e);
   w.text(m.restSource);
   for (const std::string& s : m.exampleSources) w.text(s);
-  w.u64(m.excludedTets.size());
-  for (int t : m.excludedTets) w.i32(t);
-  w.u64(m.inputVertexRows.size());
-  for (int row : m.inputVertexRows) w.i32(row);
+  w.array(m.excludedTets);
+  w.array(m.inputVertexRows);
   w.u64(m.blendCache ? 1 : 0);
   if (m.blendCache) {
     const StitchFactorData& f = m.blendCache->factor;
@@ -230,19 +227,13 @@ ModelData decodePayload(const unsigned char* data, std::size_t size, const std::
   m.restSource = r.text();
   for (std::uint64_t k = 0; k < ne; ++k) m.exampleSources.push_back(r.text());
   if (version >= 2) {
-    const std::uint64_t nx = r.count("excluded tet count");
-    if (nx > nt) {
-      throw InputError(path + ": damaged model file (" + std::to_string(nx) + " excluded tets of " +
-                       std::to_string(nt) + "); re-run 'tetblend prepare'");
+    m.excludedTets = r.array<int>("excluded tet count");
+    if (m.excludedTets.size() > nt) {
+      throw InputError(path + ": damaged model file (" + std::to_string(m.excludedTets.size()) +
+                       " excluded tets of " + std::to_string(nt) + "); re-run 'tetblend prepare'");
     }
-    r.requireRoom(nx, 4, "excluded tet count");
-    for (std::uint64_t i = 0; i < nx; ++i) m.excludedTets.push_back(r.i32());
   }
-  if (version >= 3) {
-    const std::uint64_t nu = r.count("input vertex count");
-    r.requireRoom(nu, 4, "input vertex count");
-    for (std::uint64_t i = 0; i < nu; ++i) m.inputVertexRows.push_back(r.i32());
-  }
+  if (version >= 3) m.inputVertexRows = r.array<int>("input vertex count");
   if (version >= 4 && r.flag("blend cache flag")) {
     BlendCache cache;
     StitchFactorData& f = cache.factor;
