@@ -10,6 +10,10 @@
 namespace tetblend::apps_test {
 namespace {
 
+// A loose vertex is the blend (1 - w) rest + w example of coordinates below
+// 10, written to the .vtp as doubles: a few ulps of 10 (~2e-15) apart.
+constexpr double kLinearBlendTolerance = 1e-12;
+
 // Where the stray vertices go in the vertex list, and the rest's and the
 // example's positions of each (away from the bar, moved by the example).
 const std::vector<int>& strayIndices() {
@@ -86,7 +90,8 @@ TEST_P(LooseVertices, ArePreparedAndFollowTheExamplesLinearly) {
     // blend (round-off of one multiply-add).
     const Vertices linear = (1.0 - w) * rest_.vertices + w * twist_.vertices;
     for (int v : strayIndices()) {
-      EXPECT_LT((blended.row(v) - linear.row(v)).norm(), 1e-12) << "vertex " << v << " at " << w;
+      EXPECT_LT((blended.row(v) - linear.row(v)).norm(), kLinearBlendTolerance)
+          << "vertex " << v << " at " << w;
     }
     if (w != 0.5) {
       EXPECT_LT(maxDistance(blended, linear), kInterpolationTolerance) << w;
