@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <map>
+#include <memory>
 #include <mutex>
 #include <utility>
 
@@ -10,6 +12,7 @@
 #include <tbb/parallel_pipeline.h>
 #include <tbb/task_arena.h>
 
+#include "half_edge_table.h"
 #include "surface_interior.h"
 #include "tet_stellar_split.h"
 #include "tetblend/core/error.h"
@@ -113,24 +116,89 @@ void split(const std::vector<Simplex>& simplices, CompatibleTetMeshes& meshes) {
   ++meshes.rounds;
 }
 
+// Per vertex of `mesh`, its tet component (tets linked through shared
+// vertices), numbered 0, 1, ... by first vertex. Components meshed each on
+// their own (component_meshing.h) may overlap: each bounds a solid of its
+// own, and only the faces of one component must not intersect.
+std::vector<int> vertexComponents(const TetMesh& mesh) {
+  detail::UnionFind sets(static_cast<std::size_t>(mesh.vertices.rows()));
+  for (Eigen::Index t = 0; t < mesh.tets.rows(); ++t) {
+    for (int c = 1; c < 4; ++c) {
+      sets.unite(static_cast<std::size_t>(mesh.tets(t, 0)),
+                 static_cast<std::size_t>(mesh.tets(t, c)));
+    }
+  }
+  std::vector<int> label(static_cast<std::size_t>(mesh.vertices.rows()), -1);
+  std::vector<int> rootLabel(label.size(), -1);
+  int count = 0;
+  for (std::size_t v = 0; v < label.size(); ++v) {
+    int& root = rootLabel[sets.find(v)];
+    if (root < 0) root = count++;
+    label[v] = root;
+  }
+  return label;
+}
+
+// Per face of `triangles`, the component of its first corner.
+std::vector<int> faceComponents(const Triangles& triangles,
+                                const std::vector<int>& vertexComponent) {
+  std::vector<int> group(static_cast<std::size_t>(triangles.rows()));
+  for (Eigen::Index f = 0; f < triangles.rows(); ++f) {
+    group[static_cast<std::size_t>(f)] = vertexComponent[static_cast<std::size_t>(triangles(f, 0))];
+  }
+  return group;
+}
+
+// The solids an example's surface bounds, one per tet component, each made
+// when first asked for.
+class ComponentInteriors {
+ public:
+  ComponentInteriors(const Vertices& example, const Triangles& triangles,
+                     const std::vector<int>& faceComponent)
+      : example_(example), triangles_(triangles), faceComponent_(faceComponent) {}
+
+  const SurfaceInterior& of(int component) {
+    auto& interior = interiors_[component];
+    if (!interior) {
+      std::vector<Eigen::Index> rows;
+      for (std::size_t f = 0; f < faceComponent_.size(); ++f) {
+        if (faceComponent_[f] == component) rows.push_back(static_cast<Eigen::Index>(f));
+      }
+      interior = std::make_unique<SurfaceInterior>(example_, triangles_(rows, Eigen::all));
+    }
+    return *interior;
+  }
+
+ private:
+  const Vertices& example_;
+  const Triangles& triangles_;
+  const std::vector<int>& faceComponent_;
+  std::map<int, std::unique_ptr<SurfaceInterior>> interiors_;
+};
+
 // The rigid simplices of `mesh` (rigidSimplices) that leave the solid of a
-// clean example (one whose surface does not intersect itself), as what to
-// split: such an edge itself; such a face through one of its rigid edges if
-// it has one (the split frees the face too), else the face. Sorted, edges
-// first, so splitSimplices never meets a face whose edge it already split.
+// clean example (one whose surface does not intersect itself), the solid of
+// their own tet component, as what to split: such an edge itself; such a
+// face through one of its rigid edges if it has one (the split frees the
+// face too), else the face. Sorted, edges first, so splitSimplices never
+// meets a face whose edge it already split.
 std::vector<Simplex> rigidSimplicesOutside(const TetMesh& mesh, int surfaceCount,
                                            const BoundarySimplices& boundary,
                                            const std::vector<Vertices>& examples,
                                            const Triangles& triangles,
+                                           const std::vector<int>& vertexComponent,
                                            const std::vector<SelfIntersections>& found) {
   const std::vector<Simplex> rigid = rigidSimplices(mesh, surfaceCount, boundary);
   if (rigid.empty()) return {};
+  const std::vector<int> faceComponent = faceComponents(triangles, vertexComponent);
   std::vector<std::vector<Simplex>> perExample(examples.size());
   tbb::parallel_for(std::size_t{0}, examples.size(), [&](std::size_t k) {
     if (found[k].pairCount > 0) return;
-    const SurfaceInterior interior(examples[k], triangles);
+    ComponentInteriors interiors(examples[k], triangles, faceComponent);
     for (const Simplex& simplex : rigid) {
       const auto& v = simplex.vertices;
+      const SurfaceInterior& interior =
+          interiors.of(vertexComponent[static_cast<std::size_t>(v[0])]);
       if (simplex.count == 2) {
         if (!interior.segmentInside(v[0], v[1])) perExample[k].push_back(simplex);
         continue;
@@ -215,15 +283,17 @@ CompatibleTetMeshes buildCompatibleTetMeshes(const TetMesh& rest, int surfaceVer
   meshes.rest = rest;
   const BoundarySimplices boundary = boundarySimplices(rest);
   const Triangles triangles = boundarySurface(rest).triangles;
+  const std::vector<int> vertexComponent = vertexComponents(rest);
+  const std::vector<int> faceComponent = faceComponents(triangles, vertexComponent);
   for (const Vertices& example : exampleSurfaces) {
-    meshes.selfIntersections.push_back(findSelfIntersections(example, triangles, 1));
+    meshes.selfIntersections.push_back(findSelfIntersections(example, triangles, 1, faceComponent));
   }
 
   // Stage 1: rigid edges and faces that leave a clean example's solid, then
   // all-surface tets an example inverts (no placement can help either).
   const std::vector<Simplex> outside =
       rigidSimplicesOutside(meshes.rest, surfaceVertexCount, boundary, exampleSurfaces, triangles,
-                            meshes.selfIntersections);
+                            vertexComponent, meshes.selfIntersections);
   if (!outside.empty() && options.maxRounds > 0) {
     meshes.rigidSimplicesOutside = static_cast<int>(outside.size());
     split(outside, meshes);

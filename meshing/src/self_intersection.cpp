@@ -6,6 +6,9 @@
 
 #include <algorithm>
 #include <array>
+#include <string>
+
+#include "tetblend/core/error.h"
 
 namespace tetblend {
 namespace {
@@ -78,10 +81,11 @@ class SoupIntersector {
   std::vector<Point> points_;
 };
 
-}  // namespace
-
-SelfIntersections findSelfIntersections(const Vertices& vertices, const Triangles& triangles,
-                                        std::size_t maxReportedPairs) {
+// The intersecting pairs of faces, all of them or (with `faceGroup`) those
+// of faces in the same group.
+SelfIntersections intersectingPairs(const Vertices& vertices, const Triangles& triangles,
+                                    std::size_t maxReportedPairs,
+                                    const std::vector<int>* faceGroup) {
   const SoupIntersector soup(vertices, triangles);
   std::vector<Box> boxes;
   boxes.reserve(static_cast<std::size_t>(triangles.rows()));
@@ -92,6 +96,10 @@ SelfIntersections findSelfIntersections(const Vertices& vertices, const Triangle
   CGAL::box_self_intersection_d(boxes.begin(), boxes.end(), [&](const Box& a, const Box& b) {
     const int f = std::min(a.info(), b.info());
     const int g = std::max(a.info(), b.info());
+    if (faceGroup &&
+        (*faceGroup)[static_cast<std::size_t>(f)] != (*faceGroup)[static_cast<std::size_t>(g)]) {
+      return;
+    }
     if (soup.intersect(f, g)) found.emplace_back(f, g);
   });
   std::sort(found.begin(), found.end());
@@ -100,6 +108,23 @@ SelfIntersections findSelfIntersections(const Vertices& vertices, const Triangle
   found.resize(std::min(found.size(), maxReportedPairs));
   result.pairs = std::move(found);
   return result;
+}
+
+}  // namespace
+
+SelfIntersections findSelfIntersections(const Vertices& vertices, const Triangles& triangles,
+                                        std::size_t maxReportedPairs) {
+  return intersectingPairs(vertices, triangles, maxReportedPairs, nullptr);
+}
+
+SelfIntersections findSelfIntersections(const Vertices& vertices, const Triangles& triangles,
+                                        std::size_t maxReportedPairs,
+                                        const std::vector<int>& faceGroup) {
+  if (faceGroup.size() != static_cast<std::size_t>(triangles.rows())) {
+    throw InputError("findSelfIntersections: " + std::to_string(faceGroup.size()) +
+                     " face groups for " + std::to_string(triangles.rows()) + " faces");
+  }
+  return intersectingPairs(vertices, triangles, maxReportedPairs, &faceGroup);
 }
 
 }  // namespace tetblend

@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <limits>
+#include <optional>
 
 #include "tetblend/core/error.h"
+#include "tetblend/meshing/component_meshing.h"
 #include "tetblend/meshing/degenerate_faces.h"
 #include "tetblend/meshing/seam_welding.h"
 #include "tetblend/meshing/self_intersection.h"
@@ -110,6 +112,69 @@ int differingRows(const Triangles& a, const Triangles& b) {
   return count;
 }
 
+// When faces of different closed components intersect (`found` lists every
+// intersecting pair), marks `meshed` for meshing each component on its own,
+// reverses the components that face inwards (each must bound its own
+// solid), and returns true.
+bool meshEachComponent(MeshedRest& meshed, const SelfIntersections& found) {
+  std::vector<int> faceComponent;
+  const std::vector<SurfaceComponent> components =
+      surfaceComponents(meshed.surface, &faceComponent);
+  const auto component = [&](int f) { return faceComponent[static_cast<std::size_t>(f)]; };
+  for (const auto& [f, g] : found.pairs) {
+    if (component(f) != component(g)) ++meshed.overlappingPairs;
+  }
+  const bool closed = std::all_of(components.begin(), components.end(),
+                                  [](const SurfaceComponent& c) { return c.closed; });
+  if (meshed.overlappingPairs == 0 || !closed) {
+    meshed.overlappingPairs = 0;
+    return false;
+  }
+  Triangles& triangles = meshed.surface.triangles;
+  for (Eigen::Index f = 0; f < triangles.rows(); ++f) {
+    if (components[static_cast<std::size_t>(component(static_cast<int>(f)))].signedVolume < 0.0) {
+      std::swap(triangles(f, 1), triangles(f, 2));
+    }
+  }
+  meshed.faceComponent = std::move(faceComponent);
+  meshed.componentCount = static_cast<int>(components.size());
+  return true;
+}
+
+// --strict and a rest whose components intersect themselves.
+[[noreturn]] void refuseStrictly(const SelfIntersections& found, const std::string& restName) {
+  throw InputError(restName + ": faces " + std::to_string(found.pairs.front().first) + " and " +
+                   std::to_string(found.pairs.front().second) +
+                   " of one closed component "
+                   "intersect (" +
+                   std::to_string(found.pairCount) +
+                   " such pairs in total), and --strict refuses a rest that intersects itself: "
+                   "repair the surface (e.g. CGAL's autorefine or MeshLab), or leave out "
+                   "--strict to mesh a separated copy");
+}
+
+// The separated copy of the meshed surface (surface_separation.h): whole,
+// or component by component when they are meshed each on its own.
+std::optional<SurfaceSeparation> separatedSurface(const MeshedRest& meshed,
+                                                  const SurfaceSeparationOptions& options) {
+  if (meshed.faceComponent.empty()) return separateSelfIntersections(meshed.surface, options);
+  SurfaceSeparation whole{meshed.surface.vertices, 0, 0.0, 0};
+  for (int c = 0; c < meshed.componentCount; ++c) {
+    const SurfacePart part = surfacePart(meshed.surface, meshed.faceComponent, c);
+    const auto separated = separateSelfIntersections(part.surface, options);
+    if (!separated) return std::nullopt;
+    if (separated->movedVertices == 0) continue;
+    for (std::size_t i = 0; i < part.vertexRows.size(); ++i) {
+      whole.vertices.row(part.vertexRows[i]) =
+          separated->vertices.row(static_cast<Eigen::Index>(i));
+    }
+    whole.movedVertices += separated->movedVertices;
+    whole.largestDisplacement = std::max(whole.largestDisplacement, separated->largestDisplacement);
+    whole.rounds = std::max(whole.rounds, separated->rounds);
+  }
+  return whole;
+}
+
 }  // namespace
 
 MeshedRest meshedRest(const SurfaceMesh& rest, const std::string& restName,
@@ -130,23 +195,35 @@ MeshedRest meshedRest(const SurfaceMesh& rest, const std::string& restName,
   const bool onlyIntersections = std::all_of(
       checked.problems.begin(), checked.problems.end(),
       [](const SurfaceProblem& p) { return p.kind == SurfaceProblemKind::kSelfIntersection; });
-  if (!onlyIntersections || options.strict) {
+  if (!onlyIntersections) {
     refuseCutFill(listedPairs(checked), userFaces, restName);
     requireValidRest(meshed.surface, restName);
   }
 
-  const SelfIntersections found = findSelfIntersections(
-      meshed.surface.vertices, meshed.surface.triangles, std::numeric_limits<std::size_t>::max());
+  SelfIntersections found = findSelfIntersections(meshed.surface.vertices, meshed.surface.triangles,
+                                                  std::numeric_limits<std::size_t>::max());
+  if (meshEachComponent(meshed, found)) {
+    meshed.reorientedFaces =
+        differingRows(meshed.surface.triangles.topRows(userFaces), rest.triangles);
+    found = findSelfIntersections(meshed.surface.vertices, meshed.surface.triangles,
+                                  std::numeric_limits<std::size_t>::max(), meshed.faceComponent);
+    if (found.pairCount == 0) return meshed;
+    if (options.strict) refuseStrictly(found, restName);
+  } else if (options.strict) {
+    refuseCutFill(found, userFaces, restName);
+    requireValidRest(meshed.surface, restName);
+  }
   refuseCutFill(found, userFaces, restName);
   meshed.intersectingPairs = found.pairCount;
   meshed.firstPair = found.pairs.front();
   const SurfaceSeparationOptions separation;
-  const auto separated = separateSelfIntersections(meshed.surface, separation);
+  const auto separated = separatedSurface(meshed, separation);
   if (!separated) {
     throw InputError(restName + ": faces " + std::to_string(meshed.firstPair.first) + " and " +
                      std::to_string(meshed.firstPair.second) + " intersect (" +
-                     std::to_string(found.pairCount) +
-                     " intersecting pairs in total), too deeply to separate by moving each "
+                     std::to_string(found.pairCount) + " intersecting pairs in total" +
+                     (meshed.faceComponent.empty() ? "" : " within its closed components") +
+                     "), too deeply to separate by moving each "
                      "vertex by up to " +
                      formatNumber(100.0 * separation.maxDisplacement) +
                      " % of the bounding-box diagonal or its own edge length: repair the "
@@ -157,7 +234,7 @@ MeshedRest meshedRest(const SurfaceMesh& rest, const std::string& restName,
   meshed.separated = true;
   meshed.movedVertices = separated->movedVertices;
   meshed.largestDisplacement = separated->largestDisplacement;
-  meshed.surface.vertices = separated->vertices;
+  meshed.surface.vertices = std::move(separated->vertices);
   return meshed;
 }
 

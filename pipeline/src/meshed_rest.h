@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "tetblend/meshing/hole_filling.h"
 #include "tetblend/pipeline/prepare_model.h"
@@ -29,12 +30,19 @@ struct MeshedRest {
   std::pair<int, int> firstPair{-1, -1};  ///< its first intersecting faces
   int movedVertices = 0;                  ///< by the separation
   double largestDisplacement = 0.0;       ///< by the separation, file units
+  /// Closed components that intersect one another are meshed each on its
+  /// own (component_meshing.h), every one oriented outward: per face of
+  /// `surface`, its component (empty when the surface is meshed whole).
+  std::vector<int> faceComponent;
+  int componentCount = 0;
+  std::size_t overlappingPairs = 0;  ///< intersecting face pairs of different components
 };
 
 /// The meshed rest of `rest` (read from `restName`). Faces that point inwards
 /// or against their neighbours are reversed for meshing; holes are filled
-/// unless options.fillHoles is off; a rest that intersects itself is
-/// separated unless options.strict. Throws InputError with the first problem
+/// unless options.fillHoles is off; closed components that intersect one
+/// another are meshed each on its own; a rest that intersects itself within
+/// a component is separated unless options.strict. Throws InputError with the first problem
 /// when the rest cannot be meshed: non-manifold, open with fillHoles off, a
 /// hole fill that cuts the surface, or self-intersections too deep to
 /// separate (or any, with strict). Not for the tetrisation, which meshes the

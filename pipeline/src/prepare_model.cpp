@@ -8,6 +8,7 @@
 #include "meshed_rest.h"
 #include "tetblend/core/error.h"
 #include "tetblend/core/tet_geometry.h"
+#include "tetblend/meshing/component_meshing.h"
 #include "tetblend/meshing/example_aware_tets.h"
 #include "tetblend/meshing/hole_filling.h"
 #include "tetblend/meshing/seam_welding.h"
@@ -97,11 +98,17 @@ void checkPrepareArguments(std::size_t exampleCount, const PrepareOptions& optio
 }
 
 // --strict fails fast: an example whose surface intersects itself is refused
-// before any meshing, since some of its tets can never be embedded.
+// before any meshing, since some of its tets can never be embedded. With
+// `faceComponent` (components meshed each on its own), only faces of one
+// component count.
 void refuseSelfIntersecting(const Triangles& triangles, const std::vector<SurfaceMesh>& examples,
-                            const std::vector<std::string>& exampleNames) {
+                            const std::vector<std::string>& exampleNames,
+                            const std::vector<int>& faceComponent = {}) {
   for (std::size_t k = 0; k < examples.size(); ++k) {
-    const SelfIntersections found = findSelfIntersections(examples[k].vertices, triangles, 1);
+    const SelfIntersections found =
+        faceComponent.empty()
+            ? findSelfIntersections(examples[k].vertices, triangles, 1)
+            : findSelfIntersections(examples[k].vertices, triangles, 1, faceComponent);
     if (found.pairCount > 0) {
       throw InputError(exampleNames[k] + ": " + diagnosis(found) +
                        ", so some tets cannot be embedded: repair the pose, or leave out --strict "
@@ -252,6 +259,12 @@ ModelData prepareModel(const SurfaceMesh& rest, const std::vector<SurfaceMesh>& 
                               " faces point inwards or against their neighbours: they are meshed "
                               "reversed (the blended surfaces keep the input's faces)");
   }
+  if (meshed.overlappingPairs > 0) {
+    say(messages.note, restName + ": its " + std::to_string(meshed.componentCount) +
+                           " closed components intersect one another (" +
+                           std::to_string(meshed.overlappingPairs) +
+                           " face pairs): each is meshed on its own, and their tets may overlap");
+  }
   if (meshed.flippedFaces > 0) {
     say(messages.note, restName + ": " + std::to_string(meshed.flippedFaces) +
                            " faces of (almost) zero area are re-split with a neighbour for "
@@ -275,7 +288,9 @@ ModelData prepareModel(const SurfaceMesh& rest, const std::vector<SurfaceMesh>& 
                            " seam edges zipped); the blended surfaces keep the input's vertices " +
                            "and faces");
   }
-  if (options.strict) refuseSelfIntersecting(meshed.surface.triangles, zipped, exampleNames);
+  if (options.strict) {
+    refuseSelfIntersecting(meshed.surface.triangles, zipped, exampleNames, meshed.faceComponent);
+  }
   advance(messages, 1);
   model.surfaceVertexCount = static_cast<int>(welding.surface.vertices.rows());
   if (welding.mergedVertices > 0) model.inputVertexRows = welding.rowOf;
@@ -283,7 +298,10 @@ ModelData prepareModel(const SurfaceMesh& rest, const std::vector<SurfaceMesh>& 
   tetgen.maxRadiusEdgeRatio = options.radiusEdgeRatio;
   tetgen.maxTetVolume = options.maxVolume.value_or(0.0);
   tetgen.sourceName = restName;
-  const TetMesh tets = tetrahedralize(meshed.surface, tetgen);
+  const TetMesh tets = meshed.faceComponent.empty()
+                           ? tetrahedralize(meshed.surface, tetgen)
+                           : tetrahedralizeEachComponent(meshed.surface, meshed.faceComponent,
+                                                         meshed.componentCount, tetgen);
   advance(messages, 1);
   if (tets.tets.rows() > kLargeMeshWarningTets) {
     say(messages.warning, restName + ": " + roughCount(tets.tets.rows()) +

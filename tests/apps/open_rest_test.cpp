@@ -111,20 +111,48 @@ TEST_F(OpenRest, TouchingHolesAreOneClearError) {
 }
 
 TEST_F(OpenRest, FillThroughTheSurfaceIsOneClearError) {
+  // The tube's last band but one climbs inwards above the plane of its top
+  // ring (ring 7: radius 0.15 at height 4.5), the last comes back down to
+  // it: the flat fill of the top hole must cut the band climbing through the
+  // plane, at radius 0.27.
+  std::vector<double> radii(9, 0.5), heights;
+  for (int k = 0; k <= 8; ++k) heights.push_back(0.5 * k);
+  radii[7] = 0.15;
+  heights[7] = 4.5;
+  heights[8] = 4.0;
+  const SurfaceMesh rest = testing_surfaces::ringStack(kSegments, radii, heights).mesh;
+  writeSurface(path("folded.obj"), rest);
+  writeSurface(path("folded_twist.obj"), SurfaceMesh{1.1 * rest.vertices, rest.triangles});
+  const RunResult r = tetblend({"prepare", path("folded.obj"), path("folded_twist.obj"), "-o",
+                                (dir_ / "folded.tbm").string()},
+                               dir_);
+  expectOneLineError(r);
+  EXPECT_NE(r.err.find("folded.obj: a triangle filling one of its holes intersects face "),
+            std::string::npos)
+      << r.err;
+  EXPECT_NE(r.err.find("close them yourself"), std::string::npos) << r.err;
+}
+
+TEST_F(OpenRest, FillThroughAnotherComponentIsMeshedOnItsOwn) {
   // A small closed cube inside the tube, straddling the plane of its top
-  // ring: the flat fill of the top hole must cut it.
+  // ring: the flat fill of the top hole cuts the cube, another component, so
+  // the closed tube and the cube are meshed each on its own.
   const SurfaceMesh cube = testing_surfaces::cube(Eigen::Vector3d(-0.1, -0.1, 3.9), 0.2);
   const SurfaceMesh rest = testing_surfaces::join(tube_.mesh, cube);
   writeSurface(path("plugged.obj"), rest);
   writeSurface(path("plugged_twist.obj"), SurfaceMesh{1.1 * rest.vertices, rest.triangles});
-  const RunResult r = tetblend({"prepare", path("plugged.obj"), path("plugged_twist.obj"), "-o",
-                                (dir_ / "plugged.tbm").string()},
-                               dir_);
-  expectOneLineError(r);
-  EXPECT_NE(r.err.find("plugged.obj: a triangle filling one of its holes intersects face "),
+  const fs::path model = dir_ / "plugged.tbm";
+  const RunResult r = tetblend(
+      {"prepare", path("plugged.obj"), path("plugged_twist.obj"), "-o", model.string()}, dir_);
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.err.find("plugged.obj: its 2 closed components intersect one another"),
             std::string::npos)
       << r.err;
-  EXPECT_NE(r.err.find("close them yourself"), std::string::npos) << r.err;
+  const fs::path out = dir_ / "plugged_one.vtu";
+  ASSERT_EQ(tetblend({"blend", model.string(), "-w", "1", "-o", out.string()}, dir_).code, 0);
+  EXPECT_LT(
+      maxDistance(pointsOf(readVtp(fs::path(out).replace_extension(".vtp"))), 1.1 * rest.vertices),
+      kInterpolationRelTol * boundingBoxDiagonal(rest.vertices));
 }
 
 // `sphere` cut open along its equator as a texture seam cuts it: the faces

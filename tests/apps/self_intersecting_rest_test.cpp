@@ -45,7 +45,8 @@ class SelfIntersectingRest : public ::testing::Test {
     // Two poses: a 60° twist and a 40° bend along the body (x).
     const Eigen::Vector3d lo = rest_.vertices.colwise().minCoeff().transpose();
     const double length = rest_.vertices.col(0).maxCoeff() - lo.x();
-    const Eigen::Vector3d origin(lo.x(), rest_.vertices.col(1).mean(), rest_.vertices.col(2).mean());
+    const Eigen::Vector3d origin(lo.x(), rest_.vertices.col(1).mean(),
+                                 rest_.vertices.col(2).mean());
     SurfaceMesh twist = rest_, bend = rest_;
     twist.vertices = twistAboutAxis(rest_.vertices, origin, Eigen::Vector3d::UnitX(),
                                     60.0 * kPi / 180.0, length);
@@ -56,8 +57,12 @@ class SelfIntersectingRest : public ::testing::Test {
     writeSurface((dir_ / "cow_bend.obj").string(), bend);
   }
   std::vector<std::string> prepareArgs(const std::string& rest, const fs::path& model) const {
-    return {"prepare", (dir_ / rest).string(), (dir_ / "cow_twist.obj").string(),
-            (dir_ / "cow_bend.obj").string(), "-o", model.string()};
+    return {"prepare",
+            (dir_ / rest).string(),
+            (dir_ / "cow_twist.obj").string(),
+            (dir_ / "cow_bend.obj").string(),
+            "-o",
+            model.string()};
   }
   fs::path dir_;
   SurfaceMesh rest_;
@@ -102,7 +107,8 @@ TEST_F(SelfIntersectingRest, BlendsGiveTheUsersRestAndEveryExample) {
   for (const std::string method : {"kaji", "liebodies", "dq", "linear", "vertex-linear"}) {
     for (const auto& [weights, expected] : cases) {
       SCOPED_TRACE(method + " at " + weights);
-      const fs::path out = dir_ / (method + "_" + weights.substr(0, 1) + weights.substr(2) + ".vtu");
+      const fs::path out =
+          dir_ / (method + "_" + weights.substr(0, 1) + weights.substr(2) + ".vtu");
       const RunResult r = tetblend(
           {"blend", model.string(), "-w", weights, "--method", method, "-o", out.string()}, dir_);
       ASSERT_EQ(r.code, 0) << r.err;
@@ -136,10 +142,10 @@ TEST_F(SelfIntersectingRest, InwardFacesAreMeshedReversedAndKept) {
     writeSurface((dir_ / (std::string("inward_") + pose)).string(), posed);
   }
   const fs::path model = dir_ / "inward.tbm";
-  const RunResult r = tetblend({"prepare", (dir_ / "inward.obj").string(),
-                                (dir_ / "inward_cow_twist.obj").string(),
-                                (dir_ / "inward_cow_bend.obj").string(), "-o", model.string()},
-                               dir_);
+  const RunResult r =
+      tetblend({"prepare", (dir_ / "inward.obj").string(), (dir_ / "inward_cow_twist.obj").string(),
+                (dir_ / "inward_cow_bend.obj").string(), "-o", model.string()},
+               dir_);
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.err.find("inward.obj: 5804 faces point inwards or against their neighbours"),
             std::string::npos)
@@ -159,20 +165,24 @@ TEST_F(SelfIntersectingRest, InwardFacesAreMeshedReversedAndKept) {
   }
 }
 
-// Two spheres whose centres are one radius apart overlap far beyond a
-// slight contact: refused with one line, quickly, and no file.
+// A sphere whose cap beyond x = 0.2 is pushed 1.6 radii along -x, through
+// its own far side: an overlap far beyond a slight contact, refused with one
+// line, quickly, and no file. (Two overlapping spheres are two components,
+// meshed each on its own: overlapping_components_test.cpp.)
 TEST(SelfIntersectingRestRefused, DeepOverlapIsOneLineAndNoFile) {
   const fs::path dir = scratchDir();
-  SurfaceMesh right = testing_surfaces::icosphere(3);
-  right.vertices.col(0).array() += 1.0;
-  const SurfaceMesh spheres = testing_surfaces::join(testing_surfaces::icosphere(3), right);
-  writeSurface((dir / "spheres.obj").string(), spheres);
+  SurfaceMesh pushed = testing_surfaces::icosphere(3);
+  for (Eigen::Index v = 0; v < pushed.vertices.rows(); ++v) {
+    if (pushed.vertices(v, 0) > 0.2) pushed.vertices(v, 0) -= 1.6;
+  }
+  ASSERT_GT(findSelfIntersections(pushed.vertices, pushed.triangles, 1).pairCount, 0u);
+  writeSurface((dir / "pushed.obj").string(), pushed);
   const std::vector<std::string> before = listDir(dir);
-  const RunResult r = tetblend({"prepare", (dir / "spheres.obj").string(),
-                                (dir / "spheres.obj").string(), "-o", (dir / "s.tbm").string()},
+  const RunResult r = tetblend({"prepare", (dir / "pushed.obj").string(),
+                                (dir / "pushed.obj").string(), "-o", (dir / "s.tbm").string()},
                                dir);
   expectOneLineError(r);
-  EXPECT_NE(r.err.find("spheres.obj: faces "), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("pushed.obj: faces "), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("too deeply to separate"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("or choose as the rest a pose whose surface does not intersect itself"),
             std::string::npos)

@@ -36,6 +36,10 @@
 //     examples there into more inverted tets: an example is untangled again
 //     on the refined mesh before its own rounds, and every example with
 //     inverted tets once more at the end.
+// With several tet components (tets linked through shared vertices), each is
+// a solid of its own: an example's faces of different components may
+// intersect (closed components meshed each on their own overlap,
+// component_meshing.h) and still leave it clean.
 // Examples whose surface intersects itself cannot be embedded where it does;
 // they are untangled only locally and briefly (intersectingUntangle) so they
 // fail fast, and they do not drive refinement.
@@ -78,7 +82,8 @@ struct CompatibleTetMeshes {
   /// stay inverted, ascending).
   std::vector<CompatibleTetResult> examples;
   /// Per example: the self-intersections of its surface (pairCount 0 =
-  /// clean; the first pair listed).
+  /// clean; the first pair listed), counting only faces of one tet component
+  /// (components meshed each on their own may overlap, component_meshing.h).
   std::vector<SelfIntersections> selfIntersections;
   int steinerPoints = 0;           ///< interior vertices added by refinement
   int rounds = 0;                  ///< refinement rounds performed (stages 1 and 3)

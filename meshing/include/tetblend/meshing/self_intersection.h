@@ -33,4 +33,11 @@ struct SelfIntersections {
 SelfIntersections findSelfIntersections(const Vertices& vertices, const Triangles& triangles,
                                         std::size_t maxReportedPairs);
 
+/// As above, counting only pairs of faces with the same label in
+/// `faceGroup` (#F labels): the faces of different groups may overlap, as
+/// closed components meshed each on its own do (component_meshing.h).
+SelfIntersections findSelfIntersections(const Vertices& vertices, const Triangles& triangles,
+                                        std::size_t maxReportedPairs,
+                                        const std::vector<int>& faceGroup);
+
 }  // namespace tetblend

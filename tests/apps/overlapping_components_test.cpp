@@ -1,0 +1,136 @@
+// End to end: a rest whose closed components go through one another (a
+// character's eye and tooth through its head, bones through bones) is
+// prepared by meshing each component on its own. Nothing is excluded, and
+// blends give the rest at zero weights and each example at unit weights.
+// --strict accepts it (nothing is inexact) but still refuses a component
+// that intersects itself.
+
+#include "apps_test_support.h"
+#include "test_surfaces.h"
+#include "tetblend/core/constants.h"
+#include "tetblend/core/tet_geometry.h"
+#include "tetblend/meshing/procedural_shapes.h"
+#include "tetblend/meshing/self_intersection.h"
+#include "tetblend/meshing/surface_orientation.h"
+#include "tetblend/pipeline/model_file.h"
+
+namespace tetblend::apps_test {
+namespace {
+
+// The promise: unit weights reproduce each example at the surface to
+// 1e-9 of the bounding-box diagonal (round-off is ~1e-13 on this mesh).
+constexpr double kInterpolationRelTol = 1e-9;
+// A sum of ~10^4 positive tet volumes against a total of ~2: round-off
+// ~1e-14 relative; a missing tet is > 1e-5 of it.
+constexpr double kVolumeRelTol = 1e-10;
+
+SurfaceMesh sphereAt(const Eigen::RowVector3d& centre, const Eigen::RowVector3d& radii) {
+  SurfaceMesh s = testing_surfaces::icosphere(3);
+  s.vertices = (s.vertices.array().rowwise() * radii.array()).matrix();
+  s.vertices.rowwise() += centre;
+  return s;
+}
+
+class OverlappingComponents : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = scratchDir();
+    // A body 4 long (x from -2 to 2) and 1 thick; an eye of radius 0.3
+    // centred on its surface near one end; a tooth of radius 0.2 through
+    // the eye and into the body.
+    const std::vector<SurfaceMesh> parts = {sphereAt({0, 0, 0}, {2.0, 0.5, 0.5}),
+                                            sphereAt({1.6, 0.3, 0}, {0.3, 0.3, 0.3}),
+                                            sphereAt({1.6, 0.1, 0.2}, {0.2, 0.2, 0.2})};
+    rest_ = testing_surfaces::join(testing_surfaces::join(parts[0], parts[1]), parts[2]);
+    for (const SurfaceMesh& part : parts) componentVolumes_ += enclosedVolume(part);
+    const Eigen::Vector3d origin(-2.0, 0.0, 0.0), axis = Eigen::Vector3d::UnitX();
+    write("rest.obj", rest_.vertices);
+    write("twist.obj", twistAboutAxis(rest_.vertices, origin, axis, kPi, 4.0));
+    write("bend.obj",
+          bendAboutAxis(rest_.vertices, origin, axis, Eigen::Vector3d::UnitY(), 0.5 * kPi, 4.0));
+  }
+  void write(const std::string& name, const Vertices& vertices) const {
+    writeSurface(path(name), SurfaceMesh{vertices, rest_.triangles});
+  }
+  std::string path(const std::string& name) const { return (dir_ / name).string(); }
+  std::vector<std::string> prepareArgs(const fs::path& model) const {
+    return {"prepare", path("rest.obj"), path("twist.obj"), path("bend.obj"), "-o", model.string()};
+  }
+
+  fs::path dir_;
+  SurfaceMesh rest_;
+  double componentVolumes_ = 0.0;
+};
+
+TEST_F(OverlappingComponents, EachIsMeshedOnItsOwnAndNothingIsExcluded) {
+  ASSERT_GT(findSelfIntersections(rest_.vertices, rest_.triangles, 1).pairCount, 0u);
+  const fs::path model = dir_ / "head.tbm";
+  const RunResult r = tetblend(prepareArgs(model), dir_);
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.err.find("rest.obj: its 3 closed components intersect one another"),
+            std::string::npos)
+      << r.err;
+  EXPECT_EQ(r.err.find("warning"), std::string::npos) << r.err;
+  const ModelData m = readModelFile(model.string());
+  EXPECT_TRUE(m.excludedTets.empty());
+  EXPECT_TRUE(m.rest.vertices.topRows(rest_.vertices.rows()) == rest_.vertices);
+  // Every component's solid is filled whole: the tet volumes add up to the
+  // sum of the three enclosed volumes (a mesh of the union holds less), and
+  // every tet is positive in the rest and in both examples.
+  double volume = 0.0;
+  for (Eigen::Index t = 0; t < m.rest.tets.rows(); ++t) {
+    const double v = tetSignedVolume(m.rest.vertices, m.rest.tets.row(t));
+    EXPECT_GT(v, 0.0) << "tet " << t;
+    volume += v;
+    for (const Vertices& example : m.examples) {
+      EXPECT_GT(tetSignedVolume(example, m.rest.tets.row(t)), 0.0) << "tet " << t;
+    }
+  }
+  EXPECT_NEAR(volume, componentVolumes_, kVolumeRelTol * componentVolumes_);
+}
+
+TEST_F(OverlappingComponents, BlendsGiveTheRestAndEveryExample) {
+  const fs::path model = dir_ / "head.tbm";
+  ASSERT_EQ(tetblend(prepareArgs(model), dir_).code, 0);
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"0,0", "rest.obj"}, {"1,0", "twist.obj"}, {"0,1", "bend.obj"}};
+  for (const std::string method : {"kaji", "liebodies", "dq"}) {
+    for (const auto& [weights, expected] : cases) {
+      SCOPED_TRACE(method + " at " + weights);
+      const fs::path out = dir_ / (method + weights.substr(0, 1) + weights.substr(2) + ".vtp");
+      const RunResult r = tetblend(
+          {"blend", model.string(), "-w", weights, "--method", method, "-o", out.string()}, dir_);
+      ASSERT_EQ(r.code, 0) << r.err;
+      const SurfaceMesh target = readSurface(path(expected));
+      EXPECT_LT(maxDistance(pointsOf(readVtp(out)), target.vertices),
+                kInterpolationRelTol * boundingBoxDiagonal(target.vertices));
+    }
+  }
+}
+
+TEST_F(OverlappingComponents, StrictAcceptsThemButNotAComponentThatIntersectsItself) {
+  std::vector<std::string> args = prepareArgs(dir_ / "strict.tbm");
+  args.push_back("--strict");
+  const RunResult accepted = tetblend(args, dir_);
+  ASSERT_EQ(accepted.code, 0) << accepted.err;
+
+  // The eye's far cap (x > 1.75) pushed 0.4 along -x, through the eye's
+  // own near side.
+  Vertices folded = rest_.vertices;
+  const Eigen::Index eyeBegin = rest_.vertices.rows() / 3, eyeEnd = 2 * eyeBegin;
+  for (Eigen::Index v = eyeBegin; v < eyeEnd; ++v) {
+    if (folded(v, 0) > 1.75) folded(v, 0) -= 0.4;
+  }
+  write("rest.obj", folded);
+  const std::vector<std::string> before = listDir(dir_);
+  args[args.size() - 2] = (dir_ / "refused.tbm").string();
+  const RunResult refused = tetblend(args, dir_);
+  expectOneLineError(refused);
+  EXPECT_NE(refused.err.find("rest.obj: faces "), std::string::npos) << refused.err;
+  EXPECT_NE(refused.err.find("of one closed component intersect"), std::string::npos)
+      << refused.err;
+  EXPECT_EQ(listDir(dir_), before);
+}
+
+}  // namespace
+}  // namespace tetblend::apps_test
