@@ -28,8 +28,10 @@ void addPrepareOptions(CLI::App& command, PrepareSettings& settings) {
       "input's faces)");
   command.add_flag("--strict", settings.strict,
                    "refuse an example whose surface folds or intersects itself so that some tets "
-                   "cannot be embedded (default: off; such tets are reported and left out of the "
-                   "stitch)");
+                   "cannot be embedded, a rest that intersects itself, and parts of the rest that "
+                   "cannot be filled with tets (default: off; such tets are reported and left out "
+                   "of the stitch, the rest is meshed on a separated copy, and those parts get one "
+                   "tet per face)");
   addThreadsOption(command, settings.threads);
 }
 

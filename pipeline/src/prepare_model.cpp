@@ -6,6 +6,7 @@
 
 #include "meshable_input.h"
 #include "meshed_rest.h"
+#include "model_join.h"
 #include "tetblend/core/error.h"
 #include "tetblend/core/tet_geometry.h"
 #include "tetblend/meshing/component_meshing.h"
@@ -14,6 +15,7 @@
 #include "tetblend/meshing/seam_welding.h"
 #include "tetblend/meshing/self_intersection.h"
 #include "tetblend/meshing/surface_io.h"
+#include "tetblend/meshing/surface_orientation.h"
 #include "tetblend/meshing/surface_validation.h"
 #include "tetblend/meshing/tetgen_mesher.h"
 #include "tetblend/meshing/tetrisation.h"
@@ -155,12 +157,14 @@ void checkExamples(const SurfaceMesh& rest, const std::vector<SurfaceMesh>& exam
 }
 
 // The model of the per-face tetrisation: the user's surface as it is (open
-// or not, seams and all), no interior.
+// or not, seams and all, crossing itself or not: each face's tet is its
+// own), no interior.
 ModelData tetrisedModel(const SurfaceMesh& rest, const std::vector<SurfaceMesh>& examples,
                         const std::string& restName, const std::vector<std::string>& exampleNames,
                         const PrepareOptions& options, const PrepareMessages& messages) {
   SurfaceValidationOptions validation;
   validation.requireClosed = false;
+  validation.checkSelfIntersections = false;
   requireValidRest(rest, restName, validation);
   checkExamples(rest, examples, restName, exampleNames, messages);
   if (options.strict) refuseSelfIntersecting(rest.triangles, examples, exampleNames);
@@ -221,6 +225,124 @@ ModelData withoutUnmeshableParts(const SurfaceMesh& rest, const std::vector<Surf
   return model;
 }
 
+// Per face of the input, 1 where its component (of the zipped surface)
+// cannot be meshed with an interior on its own (meshedRest refuses it: an
+// open sheet no fill closes, faces that cross too deeply, ...), else 0.
+std::vector<int> componentsWithoutInterior(const SeamWelding& welding, const std::string& restName,
+                                           const PrepareOptions& options, int& count) {
+  std::vector<int> faceComponent;
+  const std::vector<SurfaceComponent> components =
+      surfaceComponents(welding.surface, &faceComponent);
+  std::vector<int> refused(components.size(), 0);
+  count = 0;
+  for (std::size_t c = 0; c < components.size(); ++c) {
+    const SurfacePart part = surfacePart(welding.surface, faceComponent, static_cast<int>(c));
+    try {
+      meshedRest(part.surface, restName, options);
+    } catch (const InputError&) {
+      refused[c] = 1;
+      ++count;
+    }
+  }
+  std::vector<int> label(faceComponent.size());
+  for (std::size_t f = 0; f < label.size(); ++f) {
+    label[f] = faceComponent[f] < 0 ? 0 : refused[static_cast<std::size_t>(faceComponent[f])];
+  }
+  return label;
+}
+
+// The part of the input (rest and examples) whose faces `label` marks
+// `which`, as a surface of its own.
+struct InputPart {
+  SurfaceMesh rest;
+  std::vector<SurfaceMesh> examples;
+  std::vector<int> inputVertices;
+};
+
+InputPart inputPart(const SurfaceMesh& rest, const std::vector<SurfaceMesh>& examples,
+                    const std::vector<int>& label, int which) {
+  SurfacePart part = surfacePart(rest, label, which);
+  InputPart result{std::move(part.surface), {}, std::move(part.vertexRows)};
+  for (const SurfaceMesh& example : examples) {
+    Vertices positions(static_cast<Eigen::Index>(result.inputVertices.size()), 3);
+    for (std::size_t i = 0; i < result.inputVertices.size(); ++i) {
+      positions.row(static_cast<Eigen::Index>(i)) = example.vertices.row(result.inputVertices[i]);
+    }
+    result.examples.push_back({std::move(positions), result.rest.triangles});
+  }
+  return result;
+}
+
+// When meshing refused the rest (`refusal`): the components that cannot be
+// meshed with an interior on their own get one tet per face (the
+// tetrisation), the others are prepared as usual, and the two models are
+// joined. Rethrows `refusal` with --no-fill-holes or --strict, when every
+// component meshes on its own (the refusal is about how they meet), or
+// when the tetrisation refuses those that do not.
+ModelData withComponentsTetrised(const SurfaceMesh& rest, const std::vector<SurfaceMesh>& examples,
+                                 const std::string& restName,
+                                 const std::vector<std::string>& exampleNames,
+                                 const PrepareOptions& options, const PrepareMessages& messages,
+                                 const SeamWelding& welding, const InputError& refusal) {
+  if (!options.fillHoles || options.strict) throw refusal;
+  int count = 0;
+  const std::vector<int> label = componentsWithoutInterior(welding, restName, options, count);
+  if (count == 0) throw refusal;
+  for (std::size_t k = 0; k < examples.size(); ++k) {
+    requireCompatibleExample(rest, examples[k], exampleNames[k]);
+  }
+  InputPart sheets = inputPart(rest, examples, label, 1);
+  try {
+    orientConsistently(sheets.rest);  // the tets only: the model keeps the input's faces
+  } catch (const InputError&) {
+  }
+  for (SurfaceMesh& example : sheets.examples) example.triangles = sheets.rest.triangles;
+  ModelPart tetrised{{}, sheets.inputVertices};
+  try {
+    tetrised.model = tetrisedModel(sheets.rest, sheets.examples, restName, exampleNames, options,
+                                   PrepareMessages{});
+  } catch (const InputError& error) {
+    throw InputError(
+        std::string(refusal.what()) + "; meshing " +
+        (count == 1 ? std::string("the component") : std::to_string(count) + " components") +
+        " that cannot be filled with tets face by face fails too: " + error.what());
+  }
+  if (sheets.rest.triangles.rows() == rest.triangles.rows()) {
+    const std::string reason = refusal.what();
+    say(messages.note,
+        reason + "; instead, each of its " + std::to_string(rest.triangles.rows()) +
+            " faces gets a tet of its own, as with --tetrise, and blends without an interior");
+  } else {
+    const auto firstFace = std::find(label.begin(), label.end(), 1) - label.begin();
+    say(messages.note, restName + ": " + std::to_string(count) +
+                           " of its components (first: the one of face " +
+                           std::to_string(firstFace) +
+                           ") cannot be filled with tets on their own (open sheets that no fill "
+                           "without new vertices closes, or faces that cross): each of their " +
+                           std::to_string(sheets.rest.triangles.rows()) +
+                           " faces gets a tet of its own, as with --tetrise, and blends without "
+                           "an interior");
+  }
+  const InputPart solids = inputPart(rest, examples, label, 0);
+  ModelPart meshedPart{{}, solids.inputVertices};
+  if (solids.rest.triangles.rows() == 0) {
+    meshedPart.model.examples.assign(examples.size(), Vertices(0, 3));
+    advance(messages, prepareStepCount(examples.size()));
+  } else {
+    try {
+      meshedPart.model =
+          prepareModel(solids.rest, solids.examples, restName, exampleNames, options, messages);
+    } catch (const InputError& error) {
+      throw InputError(std::string(error.what()) +
+                       " (vertex and face numbers count the surface without the components "
+                       "tetrised face by face)");
+    }
+  }
+  meshedPart.model.restSource = restName;
+  meshedPart.model.exampleSources = exampleNames;
+  return joinedModel(meshedPart, tetrised, rest.triangles, static_cast<int>(rest.vertices.rows()));
+}
+
 }  // namespace
 
 std::size_t prepareStepCount(std::size_t exampleCount) { return exampleCount + 2; }
@@ -253,7 +375,13 @@ ModelData prepareModel(const SurfaceMesh& rest, const std::vector<SurfaceMesh>& 
   // TetGen meshes the rest with its seams zipped; the model keeps the
   // input's vertices and faces.
   const SeamWelding welding = weldSeams(rest);
-  const MeshedRest meshed = meshedZippedRest(welding, restName, options);
+  MeshedRest meshed;
+  try {
+    meshed = meshedZippedRest(welding, restName, options);
+  } catch (const InputError& refusal) {
+    return withComponentsTetrised(rest, examples, restName, exampleNames, options, messages,
+                                  welding, refusal);
+  }
   if (meshed.reorientedFaces > 0) {
     say(messages.warning, restName + ": " + std::to_string(meshed.reorientedFaces) +
                               " faces point inwards or against their neighbours: they are meshed "

@@ -12,6 +12,7 @@
 #include "tetblend/core/constants.h"
 #include "tetblend/core/tet_geometry.h"
 #include "tetblend/meshing/procedural_shapes.h"
+#include "tetblend/pipeline/model_file.h"
 
 namespace tetblend::apps_test {
 namespace {
@@ -110,11 +111,12 @@ TEST_F(OpenRest, TouchingHolesAreOneClearError) {
       << r.err;
 }
 
-TEST_F(OpenRest, FillThroughTheSurfaceIsOneClearError) {
+TEST_F(OpenRest, FillThroughTheSurfaceFallsBackToATetPerFace) {
   // The tube's last band but one climbs inwards above the plane of its top
   // ring (ring 7: radius 0.15 at height 4.5), the last comes back down to
   // it: the flat fill of the top hole must cut the band climbing through the
-  // plane, at radius 0.27.
+  // plane, at radius 0.27. No interior fits: each face gets a tet of its own
+  // (one note line), and the blends stay exact; --strict refuses it.
   std::vector<double> radii(9, 0.5), heights;
   for (int k = 0; k <= 8; ++k) heights.push_back(0.5 * k);
   radii[7] = 0.15;
@@ -123,14 +125,35 @@ TEST_F(OpenRest, FillThroughTheSurfaceIsOneClearError) {
   const SurfaceMesh rest = testing_surfaces::ringStack(kSegments, radii, heights).mesh;
   writeSurface(path("folded.obj"), rest);
   writeSurface(path("folded_twist.obj"), SurfaceMesh{1.1 * rest.vertices, rest.triangles});
-  const RunResult r = tetblend({"prepare", path("folded.obj"), path("folded_twist.obj"), "-o",
-                                (dir_ / "folded.tbm").string()},
-                               dir_);
-  expectOneLineError(r);
+  const std::vector<std::string> args = {"prepare", path("folded.obj"), path("folded_twist.obj"),
+                                         "-o", (dir_ / "folded.tbm").string()};
+  const RunResult r = tetblend(args, dir_);
+  ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.err.find("folded.obj: a triangle filling one of its holes intersects face "),
             std::string::npos)
       << r.err;
-  EXPECT_NE(r.err.find("close them yourself"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("instead, each of its 256 faces gets a tet of its own"), std::string::npos)
+      << r.err;
+  const ModelData m = readModelFile((dir_ / "folded.tbm").string());
+  EXPECT_EQ(m.rest.tets.rows(), rest.triangles.rows());
+  const fs::path out = dir_ / "folded_one.vtp";
+  ASSERT_EQ(
+      tetblend({"blend", (dir_ / "folded.tbm").string(), "-w", "1", "-o", out.string()}, dir_).code,
+      0);
+  EXPECT_LT(maxDistance(pointsOf(readVtp(out)), 1.1 * rest.vertices),
+            kInterpolationRelTol * boundingBoxDiagonal(rest.vertices));
+
+  std::vector<std::string> strict = args;
+  strict.back() = (dir_ / "strict.tbm").string();
+  strict.push_back("--strict");
+  const std::vector<std::string> before = listDir(dir_);
+  const RunResult refused = tetblend(strict, dir_);
+  expectOneLineError(refused);
+  EXPECT_NE(refused.err.find("folded.obj: a triangle filling one of its holes intersects face "),
+            std::string::npos)
+      << refused.err;
+  EXPECT_NE(refused.err.find("close them yourself"), std::string::npos) << refused.err;
+  EXPECT_EQ(listDir(dir_), before);
 }
 
 TEST_F(OpenRest, FillThroughAnotherComponentIsMeshedOnItsOwn) {
@@ -227,6 +250,9 @@ TEST(OpenRestSeam, ASeamIsZippedAndTheBlendsKeepTheCopies) {
 // merging the copies would pinch the surface. One line names the vertices
 // and the remedies that work.
 TEST(OpenRestSeam, HolesTouchingAtACopiedVertexAreNamed) {
+  // Two unit squares touching at one corner, written twice (vertices 2 and
+  // 4): no fill closes them, so each face gets a tet of its own, and
+  // --strict refuses them with the touching vertices named.
   const fs::path dir = scratchDir();
   SurfaceMesh sheets;
   sheets.vertices.resize(8, 3);
@@ -235,16 +261,23 @@ TEST(OpenRestSeam, HolesTouchingAtACopiedVertexAreNamed) {
   sheets.triangles.resize(4, 3);
   sheets.triangles << 0, 1, 2, 0, 2, 3, 4, 5, 6, 4, 6, 7;
   writeSurface((dir / "sheets.obj").string(), sheets);
-  const std::vector<std::string> before = listDir(dir);
   const RunResult r = tetblend({"prepare", (dir / "sheets.obj").string(),
                                 (dir / "sheets.obj").string(), "-o", (dir / "s.tbm").string()},
                                dir);
-  expectOneLineError(r);
-  EXPECT_NE(r.err.find("sheets.obj: vertices 2 and 4 are at the same position on the rims of its "
-                       "holes"),
-            std::string::npos)
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.err.find("instead, each of its 4 faces gets a tet of its own"), std::string::npos)
       << r.err;
-  EXPECT_NE(r.err.find("--tetrise"), std::string::npos) << r.err;
+  const std::vector<std::string> before = listDir(dir);
+  const RunResult refused =
+      tetblend({"prepare", (dir / "sheets.obj").string(), (dir / "sheets.obj").string(), "-o",
+                (dir / "strict.tbm").string(), "--strict"},
+               dir);
+  expectOneLineError(refused);
+  EXPECT_NE(refused.err.find("sheets.obj: vertices 2 and 4 are at the same position on the rims "
+                             "of its holes"),
+            std::string::npos)
+      << refused.err;
+  EXPECT_NE(refused.err.find("--tetrise"), std::string::npos) << refused.err;
   EXPECT_EQ(listDir(dir), before);
 }
 

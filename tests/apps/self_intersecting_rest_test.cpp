@@ -166,10 +166,12 @@ TEST_F(SelfIntersectingRest, InwardFacesAreMeshedReversedAndKept) {
 }
 
 // A sphere whose cap beyond x = 0.2 is pushed 1.6 radii along -x, through
-// its own far side: an overlap far beyond a slight contact, refused with one
-// line, quickly, and no file. (Two overlapping spheres are two components,
-// meshed each on its own: overlapping_components_test.cpp.)
-TEST(SelfIntersectingRestRefused, DeepOverlapIsOneLineAndNoFile) {
+// its own far side: an overlap far beyond a slight contact. No interior
+// fits, so each face gets a tet of its own, with one note line saying why;
+// --strict refuses it with one line, quickly, and no file. (Two overlapping
+// spheres are two components, meshed each on its own:
+// overlapping_components_test.cpp.)
+TEST(SelfIntersectingRestRefused, DeepOverlapFallsBackToATetPerFace) {
   const fs::path dir = scratchDir();
   SurfaceMesh pushed = testing_surfaces::icosphere(3);
   for (Eigen::Index v = 0; v < pushed.vertices.rows(); ++v) {
@@ -177,16 +179,25 @@ TEST(SelfIntersectingRestRefused, DeepOverlapIsOneLineAndNoFile) {
   }
   ASSERT_GT(findSelfIntersections(pushed.vertices, pushed.triangles, 1).pairCount, 0u);
   writeSurface((dir / "pushed.obj").string(), pushed);
-  const std::vector<std::string> before = listDir(dir);
   const RunResult r = tetblend({"prepare", (dir / "pushed.obj").string(),
                                 (dir / "pushed.obj").string(), "-o", (dir / "s.tbm").string()},
                                dir);
-  expectOneLineError(r);
-  EXPECT_NE(r.err.find("pushed.obj: faces "), std::string::npos) << r.err;
+  ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.err.find("too deeply to separate"), std::string::npos) << r.err;
-  EXPECT_NE(r.err.find("or choose as the rest a pose whose surface does not intersect itself"),
+  EXPECT_NE(r.err.find("instead, each of its " + std::to_string(pushed.triangles.rows()) +
+                       " faces gets a tet of its own"),
             std::string::npos)
       << r.err;
+  EXPECT_EQ(readModelFile((dir / "s.tbm").string()).rest.tets.rows(), pushed.triangles.rows());
+
+  const std::vector<std::string> before = listDir(dir);
+  const RunResult refused =
+      tetblend({"prepare", (dir / "pushed.obj").string(), (dir / "pushed.obj").string(), "-o",
+                (dir / "strict.tbm").string(), "--strict"},
+               dir);
+  expectOneLineError(refused);
+  EXPECT_NE(refused.err.find("pushed.obj: faces "), std::string::npos) << refused.err;
+  EXPECT_NE(refused.err.find("intersect"), std::string::npos) << refused.err;
   EXPECT_EQ(listDir(dir), before);
 }
 

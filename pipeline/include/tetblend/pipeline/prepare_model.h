@@ -29,7 +29,10 @@ struct PrepareOptions {
   /// the tets but are not in the model's surfaceTriangles.
   bool fillHoles = true;
   /// Refuse examples with tets that cannot be embedded (default: report them
-  /// and leave them out of the stitch).
+  /// and leave them out of the stitch), a rest that intersects itself
+  /// within a component (default: meshed on a separated copy), and
+  /// components that cannot be filled with tets (default: one tet per face,
+  /// as with `tetrise`).
   bool strict = false;
 };
 

@@ -1,0 +1,129 @@
+// End to end: a rest with a closed body and an open flat sheet beside it (a
+// cape, a hair card, a leaf): no fill closes the sheet, so its faces get a
+// tet each, as with --tetrise, while the body is meshed with an interior;
+// the two are joined into one model. Blends give the rest at zero weights
+// and each example at unit weights, over every input vertex in the input's
+// order. --strict refuses the sheet instead.
+
+#include "apps_test_support.h"
+#include "test_surfaces.h"
+#include "tetblend/core/constants.h"
+#include "tetblend/core/tet_geometry.h"
+#include "tetblend/meshing/procedural_shapes.h"
+#include "tetblend/pipeline/model_file.h"
+
+namespace tetblend::apps_test {
+namespace {
+
+// The promise: unit weights reproduce each example at the surface to
+// 1e-9 of the bounding-box diagonal (round-off is ~1e-13 on this mesh).
+constexpr double kInterpolationRelTol = 1e-9;
+constexpr int kSheetCells = 6;  // the sheet: 6 × 6 squares, 72 faces
+
+// A flat grid of kSheetCells² squares at height z, x in [-1.5, 1.5] and y
+// in [-0.4, 0.4], faces up.
+SurfaceMesh flatSheet(double z) {
+  const int n = kSheetCells + 1;
+  SurfaceMesh sheet{Vertices(n * n, 3), Triangles(2 * kSheetCells * kSheetCells, 3)};
+  for (int j = 0; j < n; ++j) {
+    for (int i = 0; i < n; ++i) {
+      sheet.vertices.row(j * n + i) << -1.5 + 3.0 * i / kSheetCells, -0.4 + 0.8 * j / kSheetCells,
+          z;
+    }
+  }
+  int f = 0;
+  for (int j = 0; j < kSheetCells; ++j) {
+    for (int i = 0; i < kSheetCells; ++i) {
+      const int a = j * n + i;
+      sheet.triangles.row(f++) << a, a + 1, a + n + 1;
+      sheet.triangles.row(f++) << a, a + n + 1, a + n;
+    }
+  }
+  return sheet;
+}
+
+class TetrisedComponents : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = scratchDir();
+    SurfaceMesh body = testing_surfaces::icosphere(3);
+    body.vertices.col(0) *= 2.0;
+    body.vertices.rightCols(2) *= 0.5;
+    // The sheet first: the model's rows (body surface first) then differ
+    // from the input's order.
+    rest_ = testing_surfaces::join(flatSheet(0.8), body);
+    const Eigen::Vector3d origin(-2.0, 0.0, 0.0), axis = Eigen::Vector3d::UnitX();
+    write("rest.obj", rest_.vertices);
+    write("twist.obj", twistAboutAxis(rest_.vertices, origin, axis, kPi, 4.0));
+    write("bend.obj",
+          bendAboutAxis(rest_.vertices, origin, axis, Eigen::Vector3d::UnitY(), 0.5 * kPi, 4.0));
+  }
+  void write(const std::string& name, const Vertices& vertices) const {
+    writeSurface(path(name), SurfaceMesh{vertices, rest_.triangles});
+  }
+  std::string path(const std::string& name) const { return (dir_ / name).string(); }
+  std::vector<std::string> prepareArgs(const std::string& model) const {
+    return {"prepare", path("rest.obj"), path("twist.obj"), path("bend.obj"), "-o", path(model)};
+  }
+
+  fs::path dir_;
+  SurfaceMesh rest_;
+};
+
+TEST_F(TetrisedComponents, TheSheetGetsATetPerFaceAndTheBodyAnInterior) {
+  const RunResult r = tetblend(prepareArgs("cape.tbm"), dir_);
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.err.find("rest.obj: 1 of its components (first: the one of face 0) cannot be filled "
+                       "with tets on their own"),
+            std::string::npos)
+      << r.err;
+  EXPECT_NE(r.err.find("each of their 72 faces gets a tet of its own"), std::string::npos) << r.err;
+  const ModelData m = readModelFile(path("cape.tbm"));
+  EXPECT_EQ(m.surfaceVertexCount, rest_.vertices.rows());
+  EXPECT_EQ(m.inputVertexCount(), rest_.vertices.rows());
+  EXPECT_TRUE(m.inputVertices(m.rest.vertices) == rest_.vertices);
+  // The body's interior vertices and the sheet's 72 apexes come after the
+  // surface: more than 72 rows means the body has an interior.
+  EXPECT_GT(m.rest.vertices.rows(), rest_.vertices.rows() + 72);
+  // Every tet positive in the rest and in each example.
+  for (Eigen::Index t = 0; t < m.rest.tets.rows(); ++t) {
+    EXPECT_GT(tetSignedVolume(m.rest.vertices, m.rest.tets.row(t)), 0.0) << "tet " << t;
+    for (const Vertices& example : m.examples) {
+      EXPECT_GT(tetSignedVolume(example, m.rest.tets.row(t)), 0.0) << "tet " << t;
+    }
+  }
+  EXPECT_TRUE(m.excludedTets.empty());
+}
+
+TEST_F(TetrisedComponents, BlendsGiveTheRestAndEveryExample) {
+  ASSERT_EQ(tetblend(prepareArgs("cape.tbm"), dir_).code, 0);
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"0,0", "rest.obj"}, {"1,0", "twist.obj"}, {"0,1", "bend.obj"}};
+  for (const std::string method : {"kaji", "liebodies", "dq"}) {
+    for (const auto& [weights, expected] : cases) {
+      SCOPED_TRACE(method + " at " + weights);
+      const std::string out = path(method + weights.substr(0, 1) + weights.substr(2) + ".vtp");
+      const RunResult r =
+          tetblend({"blend", path("cape.tbm"), "-w", weights, "--method", method, "-o", out}, dir_);
+      ASSERT_EQ(r.code, 0) << r.err;
+      const SurfaceMesh target = readSurface(path(expected));
+      EXPECT_LT(maxDistance(pointsOf(readVtp(out)), target.vertices),
+                kInterpolationRelTol * boundingBoxDiagonal(target.vertices));
+    }
+  }
+}
+
+TEST_F(TetrisedComponents, StrictRefusesTheSheet) {
+  std::vector<std::string> args = prepareArgs("strict.tbm");
+  args.push_back("--strict");
+  const std::vector<std::string> before = listDir(dir_);
+  const RunResult r = tetblend(args, dir_);
+  expectOneLineError(r);
+  EXPECT_NE(r.err.find("rest.obj: a triangle filling one of its holes intersects face "),
+            std::string::npos)
+      << r.err;
+  EXPECT_EQ(listDir(dir_), before);
+}
+
+}  // namespace
+}  // namespace tetblend::apps_test
