@@ -48,12 +48,27 @@ ModelData joinedModel(const ModelPart& a, const ModelPart& b, const Triangles& i
     place(mb.examples[k], mapB, example);
     joined.examples.push_back(std::move(example));
   }
+  // b's tets use a's row of an input vertex both parts have (a sheet
+  // attached at a vertex stays attached); b's own copy is left in no tet.
+  std::vector<int> rowOfInputInA(static_cast<std::size_t>(inputVertexCount), -1);
+  for (std::size_t i = 0; i < a.inputVertices.size(); ++i) {
+    rowOfInputInA[static_cast<std::size_t>(a.inputVertices[i])] =
+        mapA(ma.inputVertexRows.empty() ? static_cast<int>(i) : ma.inputVertexRows[i]);
+  }
+  std::vector<int> tetRowB(static_cast<std::size_t>(rowsB));
+  for (int r = 0; r < rowsB; ++r) tetRowB[static_cast<std::size_t>(r)] = mapB(r);
+  for (std::size_t i = 0; i < b.inputVertices.size(); ++i) {
+    const int shared = rowOfInputInA[static_cast<std::size_t>(b.inputVertices[i])];
+    const int row = mb.inputVertexRows.empty() ? static_cast<int>(i) : mb.inputVertexRows[i];
+    if (shared >= 0) tetRowB[static_cast<std::size_t>(row)] = shared;
+  }
   const Eigen::Index tetsA = ma.rest.tets.rows();
   joined.rest.tets.resize(tetsA + mb.rest.tets.rows(), 4);
   for (Eigen::Index t = 0; t < joined.rest.tets.rows(); ++t) {
     for (int c = 0; c < 4; ++c) {
-      joined.rest.tets(t, c) =
-          t < tetsA ? mapA(ma.rest.tets(t, c)) : mapB(mb.rest.tets(t - tetsA, c));
+      joined.rest.tets(t, c) = t < tetsA
+                                   ? mapA(ma.rest.tets(t, c))
+                                   : tetRowB[static_cast<std::size_t>(mb.rest.tets(t - tetsA, c))];
     }
   }
   joined.excludedTets = ma.excludedTets;
@@ -67,11 +82,14 @@ ModelData joinedModel(const ModelPart& a, const ModelPart& b, const Triangles& i
       joined.inputVertexRows[static_cast<std::size_t>(part->inputVertices[i])] = map(row);
     }
   }
+  bool identity = true;
   for (std::size_t v = 0; v < joined.inputVertexRows.size(); ++v) {
     if (joined.inputVertexRows[v] < 0) {
       throw InputError("joinedModel: input vertex " + std::to_string(v) + " is in neither part");
     }
+    identity = identity && joined.inputVertexRows[v] == static_cast<int>(v);
   }
+  if (identity && inputVertexCount == surface) joined.inputVertexRows.clear();
   return joined;
 }
 

@@ -17,9 +17,11 @@ struct ModelPart {
 };
 
 /// The model of the whole input (`inputTriangles`, `inputVertexCount`
-/// vertices, each in `a` or `b`; one in both takes a's row) from two parts
+/// vertices, each in `a` or `b`; one in both takes a's row, in b's tets
+/// too, and b's copy is left in no tet) from two parts
 /// with the same examples: rows are a's surface vertices, b's, a's other
-/// vertices, b's; tets a's then b's; excluded tets of both; sources a's.
+/// vertices, b's; tets a's then b's; excluded tets of both; sources a's;
+/// inputVertexRows empty where they would be 0, 1, 2, ...
 ModelData joinedModel(const ModelPart& a, const ModelPart& b, const Triangles& inputTriangles,
                       int inputVertexCount);
 

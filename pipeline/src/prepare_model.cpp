@@ -236,6 +236,11 @@ std::vector<int> componentsWithoutInterior(const SeamWelding& welding, const std
   std::vector<int> refused(components.size(), 0);
   count = 0;
   for (std::size_t c = 0; c < components.size(); ++c) {
+    if (components.size() == 1) {  // the surface itself, which meshing refused
+      refused[c] = 1;
+      ++count;
+      break;
+    }
     const SurfacePart part = surfacePart(welding.surface, faceComponent, static_cast<int>(c));
     try {
       meshedRest(part.surface, restName, options);

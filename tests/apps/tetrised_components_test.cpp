@@ -113,6 +113,51 @@ TEST_F(TetrisedComponents, BlendsGiveTheRestAndEveryExample) {
   }
 }
 
+// The sheet's corner is one of the body's vertices: the sheet's tets use the
+// body's row there (the two stay one tet component), and the sheet's own
+// copy of it is the one row in no tet.
+TEST(TetrisedComponentsAttached, ASheetSharingAVertexUsesTheBodysRow) {
+  const fs::path dir = scratchDir();
+  SurfaceMesh body = testing_surfaces::icosphere(2);
+  Eigen::Index top = 0;
+  body.vertices.col(2).maxCoeff(&top);
+  SurfaceMesh sheet = flatSheet(0.0);
+  sheet.vertices.rowwise() += body.vertices.row(top) - sheet.vertices.row(0);
+  // The body, then the sheet without its corner 0, which becomes `top`.
+  const auto nb = static_cast<int>(body.vertices.rows());
+  SurfaceMesh rest{Vertices(nb + sheet.vertices.rows() - 1, 3),
+                   Triangles(body.triangles.rows() + sheet.triangles.rows(), 3)};
+  rest.vertices << body.vertices, sheet.vertices.bottomRows(sheet.vertices.rows() - 1);
+  for (Eigen::Index f = 0; f < sheet.triangles.rows(); ++f) {
+    for (int c = 0; c < 3; ++c) {
+      const int v = sheet.triangles(f, c);
+      sheet.triangles(f, c) = v == 0 ? static_cast<int>(top) : nb + v - 1;
+    }
+  }
+  rest.triangles << body.triangles, sheet.triangles;
+  writeSurface((dir / "rest.obj").string(), rest);
+  const Eigen::Vector3d origin(-1.0, 0.0, 0.0), axis = Eigen::Vector3d::UnitX();
+  const SurfaceMesh twist{twistAboutAxis(rest.vertices, origin, axis, 0.5 * kPi, 3.0),
+                          rest.triangles};
+  writeSurface((dir / "twist.obj").string(), twist);
+  const std::string model = (dir / "attached.tbm").string();
+  const RunResult r = tetblend(
+      {"prepare", (dir / "rest.obj").string(), (dir / "twist.obj").string(), "-o", model}, dir);
+  ASSERT_EQ(r.code, 0) << r.err;
+  const ModelData m = readModelFile(model);
+  std::vector<char> used(static_cast<std::size_t>(m.rest.vertices.rows()), 0);
+  for (Eigen::Index t = 0; t < m.rest.tets.rows(); ++t) {
+    for (int c = 0; c < 4; ++c) used[static_cast<std::size_t>(m.rest.tets(t, c))] = 1;
+  }
+  EXPECT_EQ(std::count(used.begin(), used.end(), 0), 1);
+  EXPECT_TRUE(used[static_cast<std::size_t>(
+      m.inputVertexRows.empty() ? top : m.inputVertexRows[static_cast<std::size_t>(top)])]);
+  const std::string out = (dir / "one.vtp").string();
+  ASSERT_EQ(tetblend({"blend", model, "-w", "1", "-o", out}, dir).code, 0);
+  EXPECT_LT(maxDistance(pointsOf(readVtp(out)), twist.vertices),
+            kInterpolationRelTol * boundingBoxDiagonal(twist.vertices));
+}
+
 TEST_F(TetrisedComponents, StrictRefusesTheSheet) {
   std::vector<std::string> args = prepareArgs("strict.tbm");
   args.push_back("--strict");
