@@ -137,6 +137,8 @@ void checkEdges(const SurfaceMesh& mesh, const SurfaceValidationOptions& options
                   " in total): the surface is open, but a volume mesh needs a closed "
                   "surface; let prepare fill the holes (its default, no new vertices), close "
                   "them yourself, or use the per-face tetrisation");
+    } else if (!options.requireSolid) {
+      continue;
     } else if (end - begin > 2) {
       out.add(SurfaceProblemKind::kNonManifoldEdge, f, static_cast<double>(end - begin),
               edge + " is shared by " + std::to_string(end - begin) + " faces (first face " +
@@ -236,8 +238,12 @@ SurfaceValidation validateSurface(const SurfaceMesh& mesh, const std::string& so
   checkFaces(mesh, options, out);
   checkUnreferenced(mesh, out);
   checkEdges(mesh, options, out);
-  checkVertexFans(mesh, out);
-  result.componentCount = checkComponents(mesh, out);
+  if (options.requireSolid) {
+    checkVertexFans(mesh, out);
+    result.componentCount = checkComponents(mesh, out);
+  } else {
+    result.componentCount = static_cast<int>(surfaceComponents(mesh).size());
+  }
   if (options.checkSelfIntersections) checkSelfIntersections(mesh, options, out);
   std::stable_sort(result.problems.begin(), result.problems.end(),
                    [](const SurfaceProblem& a, const SurfaceProblem& b) {

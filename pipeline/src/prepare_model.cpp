@@ -157,13 +157,14 @@ void checkExamples(const SurfaceMesh& rest, const std::vector<SurfaceMesh>& exam
 }
 
 // The model of the per-face tetrisation: the user's surface as it is (open
-// or not, seams and all, crossing itself or not: each face's tet is its
-// own), no interior.
+// or not, seams and all, crossing itself, pinched or oriented any way: each
+// face's tet is its own), no interior.
 ModelData tetrisedModel(const SurfaceMesh& rest, const std::vector<SurfaceMesh>& examples,
                         const std::string& restName, const std::vector<std::string>& exampleNames,
                         const PrepareOptions& options, const PrepareMessages& messages) {
   SurfaceValidationOptions validation;
   validation.requireClosed = false;
+  validation.requireSolid = false;
   validation.checkSelfIntersections = false;
   requireValidRest(rest, restName, validation);
   checkExamples(rest, examples, restName, exampleNames, messages);

@@ -88,9 +88,11 @@ TEST_F(OpenRest, NoFillHolesRefusesAsBefore) {
   EXPECT_NE(r.err.find("let prepare fill the holes"), std::string::npos) << r.err;
 }
 
-TEST_F(OpenRest, TouchingHolesAreOneClearError) {
+TEST_F(OpenRest, TouchingHolesFallBackToATetPerFace) {
   // Drop the two triangles of quad 3 of band 0 and of quad 4 of band 1: the
-  // bottom hole and the new one then share vertex (ring 1, 4).
+  // bottom hole and the new one then share vertex (ring 1, 4). No fill
+  // closes them: each face gets a tet of its own (a pinched vertex is no
+  // obstacle to that), with the reason in the note; --strict refuses it.
   SurfaceMesh touching{tube_.mesh.vertices, Triangles(tube_.mesh.triangles.rows() - 4, 3)};
   int kept = 0;
   for (int f = 0; f < tube_.mesh.triangles.rows(); ++f) {
@@ -98,17 +100,28 @@ TEST_F(OpenRest, TouchingHolesAreOneClearError) {
     if (quad == 3 || quad == kSegments + 4) continue;
     touching.triangles.row(kept++) = tube_.mesh.triangles.row(f);
   }
+  const SurfaceMesh twist{readSurface(path("twist.obj")).vertices, touching.triangles};
   writeSurface(path("touching.obj"), touching);
-  writeSurface(path("touching_twist.obj"),
-               SurfaceMesh{readSurface(path("twist.obj")).vertices, touching.triangles});
-  const RunResult r = tetblend({"prepare", path("touching.obj"), path("touching_twist.obj"), "-o",
-                                (dir_ / "touching.tbm").string()},
-                               dir_);
-  expectOneLineError(r);
-  EXPECT_NE(r.err.find("touching.obj: vertex " + std::to_string(tube_.vertex(1, 4)) +
-                       " lies on 4 boundary edges"),
-            std::string::npos)
+  writeSurface(path("touching_twist.obj"), twist);
+  const std::string reason =
+      "touching.obj: vertex " + std::to_string(tube_.vertex(1, 4)) + " lies on 4 boundary edges";
+  const fs::path model = dir_ / "touching.tbm";
+  const RunResult r = tetblend(
+      {"prepare", path("touching.obj"), path("touching_twist.obj"), "-o", model.string()}, dir_);
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.err.find(reason), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("instead, each of its 252 faces gets a tet of its own"), std::string::npos)
       << r.err;
+  const fs::path out = dir_ / "touching_one.vtp";
+  ASSERT_EQ(tetblend({"blend", model.string(), "-w", "1", "-o", out.string()}, dir_).code, 0);
+  EXPECT_LT(maxDistance(pointsOf(readVtp(out)), twist.vertices),
+            kInterpolationRelTol * boundingBoxDiagonal(twist.vertices));
+
+  const RunResult refused = tetblend({"prepare", path("touching.obj"), path("touching_twist.obj"),
+                                      "-o", (dir_ / "strict.tbm").string(), "--strict"},
+                                     dir_);
+  expectOneLineError(refused);
+  EXPECT_NE(refused.err.find(reason), std::string::npos) << refused.err;
 }
 
 TEST_F(OpenRest, FillThroughTheSurfaceFallsBackToATetPerFace) {

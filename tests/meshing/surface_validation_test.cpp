@@ -189,6 +189,34 @@ TEST(SurfaceValidation, NonManifoldVertexOfTwoCubesTouchingAtACorner) {
   EXPECT_EQ(v.componentCount, 2);
 }
 
+// The per-face tetrisation needs valid faces only: a fin, a pinched vertex,
+// a face against its neighbours and an inward component are no problems
+// there, but a zero-area face still is.
+TEST(SurfaceValidation, WithoutRequireSolidOnlyTheFacesAreChecked) {
+  SurfaceMesh m = join(cube(), reversed(cube(Eigen::Vector3d(1, 1, 1))));
+  for (Eigen::Index i = 0; i < m.triangles.size(); ++i) {
+    if (m.triangles.data()[i] == 8) m.triangles.data()[i] = 6;  // pinch the corners
+  }
+  m = removeVertices(m, {8});
+  std::swap(m.triangles(3, 1), m.triangles(3, 2));
+  m.vertices.conservativeResize(m.vertices.rows() + 1, 3);
+  m.vertices.bottomRows(1) << 0.5, -1, -1;
+  m.triangles.conservativeResize(m.triangles.rows() + 1, 3);
+  m.triangles.bottomRows(1) << 1, 0, static_cast<int>(m.vertices.rows() - 1);  // a fin
+  for (Kind kind : {Kind::kNonManifoldEdge, Kind::kNonManifoldVertex,
+                    Kind::kInconsistentOrientation, Kind::kInwardOrientation}) {
+    EXPECT_NE(find(validateSurface(m, kFile), kind), nullptr) << problemKindName(kind);
+  }
+  SurfaceValidationOptions faces = openOptions();
+  faces.requireSolid = false;
+  const SurfaceValidation v = validateSurface(m, kFile, faces);
+  EXPECT_TRUE(v.ok()) << v.problems.front().message;
+  EXPECT_EQ(v.componentCount, 2);
+  m.vertices.bottomRows(1) << 0.5, 0, 0;  // the fin flat on its edge
+  expectProblem(validateSurface(m, kFile, faces), Kind::kZeroAreaFace, m.triangles.rows() - 1,
+                "face");
+}
+
 TEST(SurfaceValidation, OpenBoundaryOnlyInVolumetricMode) {
   SurfaceMesh m = cube();
   m.triangles.conservativeResize(11, 3);  // drop face 11 (1, 6, 5)

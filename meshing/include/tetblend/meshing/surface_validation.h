@@ -57,6 +57,10 @@ struct SurfaceValidationOptions {
   /// Volumetric mode (TetGen): boundary edges are problems. Set to false for
   /// the per-face tetrisation, which accepts open surfaces.
   bool requireClosed = true;
+  /// What bounding a solid needs beyond valid faces: manifold edges and
+  /// vertices, consistent and outward orientation. False for the per-face
+  /// tetrisation, where each face's tet is its own.
+  bool requireSolid = true;
   /// Run the exact self-intersection test (CGAL, O(F log F)).
   bool checkSelfIntersections = true;
   /// Relative area tolerance, see kDefaultZeroAreaRelTol.
