@@ -91,7 +91,7 @@ void inspectModel(const std::string& path) {
     const auto loose = std::count_if(m.inputVertexRows.begin(), m.inputVertexRows.end(),
                                      [&](int row) { return row >= m.surfaceVertexCount; });
     std::printf(
-        "  input surface: %lld vertices (copies along texture or normal seams merged for the "
+        "  input surface: %lld vertices (copies along seams or zero-length edges merged for the "
         "tets; %lld used by no face, kept beside the tets)\n",
         static_cast<long long>(m.inputVertexCount()), static_cast<long long>(loose));
   }

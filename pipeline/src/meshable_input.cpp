@@ -1,5 +1,9 @@
 #include "meshable_input.h"
 
+#include <algorithm>
+#include <iterator>
+#include <numeric>
+
 namespace tetblend {
 namespace {
 
@@ -22,28 +26,88 @@ SurfaceMesh withoutFaces(const SurfaceMesh& mesh, const std::vector<int>& faces)
   return kept;
 }
 
+// Whether vertices a and b are at one position in every one of `surfaces`.
+bool coincide(const std::vector<const Vertices*>& surfaces, int a, int b) {
+  return std::all_of(surfaces.begin(), surfaces.end(),
+                     [&](const Vertices* v) { return v->row(a) == v->row(b); });
+}
+
+// Per vertex, the smallest vertex joined to it by edges of zero length in
+// every one of `surfaces` (itself if none).
+std::vector<int> mergedEnds(const Triangles& triangles,
+                            const std::vector<const Vertices*>& surfaces) {
+  std::vector<int> parent(static_cast<std::size_t>(surfaces.front()->rows()));
+  std::iota(parent.begin(), parent.end(), 0);
+  const auto find = [&](int v) {
+    while (parent[static_cast<std::size_t>(v)] != v) {
+      v = parent[static_cast<std::size_t>(v)] =
+          parent[static_cast<std::size_t>(parent[static_cast<std::size_t>(v)])];
+    }
+    return v;
+  };
+  for (Eigen::Index f = 0; f < triangles.rows(); ++f) {
+    for (int c = 0; c < 3; ++c) {
+      const int a = triangles(f, c), b = triangles(f, (c + 1) % 3);
+      if (a == b || !coincide(surfaces, a, b)) continue;
+      const int ra = find(a), rb = find(b);
+      parent[static_cast<std::size_t>(std::max(ra, rb))] = std::min(ra, rb);
+    }
+  }
+  for (std::size_t v = 0; v < parent.size(); ++v) parent[v] = find(static_cast<int>(v));
+  return parent;
+}
+
+SurfaceMesh renumbered(const SurfaceMesh& mesh, const std::vector<int>& copyOf) {
+  SurfaceMesh result = mesh;
+  for (Eigen::Index i = 0; i < result.triangles.size(); ++i) {
+    result.triangles.data()[i] = copyOf[static_cast<std::size_t>(result.triangles.data()[i])];
+  }
+  return result;
+}
+
+bool hasZeroLengthEdge(const SurfaceMesh& rest) {
+  for (Eigen::Index f = 0; f < rest.triangles.rows(); ++f) {
+    for (int c = 0; c < 3; ++c) {
+      const int a = rest.triangles(f, c), b = rest.triangles(f, (c + 1) % 3);
+      if (a != b && rest.vertices.row(a) == rest.vertices.row(b)) return true;
+    }
+  }
+  return false;
+}
+
 }  // namespace
 
 bool hasUnmeshableParts(const SurfaceMesh& rest) {
   for (Eigen::Index f = 0; f < rest.triangles.rows(); ++f) {
     if (repeatsAVertex(rest.triangles, f)) return true;
   }
-  return !unreferencedVertices(rest).empty();
+  return hasZeroLengthEdge(rest) || !unreferencedVertices(rest).empty();
 }
 
 MeshableInput meshableInput(const SurfaceMesh& rest, const std::vector<SurfaceMesh>& examples,
                             const std::vector<std::string>& exampleNames) {
   MeshableInput result;
-  for (Eigen::Index f = 0; f < rest.triangles.rows(); ++f) {
-    if (repeatsAVertex(rest.triangles, f)) result.droppedFaces.push_back(static_cast<int>(f));
-  }
-  const SurfaceMesh faces = withoutFaces(rest, result.droppedFaces);
-  result.loose = unreferencedVertices(faces);
-  result.rest = removeVertices(faces, result.loose);
+  std::vector<const Vertices*> surfaces{&rest.vertices};
   for (std::size_t k = 0; k < examples.size(); ++k) {
     requireCompatibleExample(rest, examples[k], exampleNames[k]);
-    result.examples.push_back(
-        removeVertices(withoutFaces(examples[k], result.droppedFaces), result.loose));
+    surfaces.push_back(&examples[k].vertices);
+  }
+  result.copyOf = mergedEnds(rest.triangles, surfaces);
+  for (std::size_t v = 0; v < result.copyOf.size(); ++v) {
+    if (result.copyOf[v] != static_cast<int>(v)) result.copies.push_back(static_cast<int>(v));
+  }
+  const SurfaceMesh merged = renumbered(rest, result.copyOf);
+  for (Eigen::Index f = 0; f < merged.triangles.rows(); ++f) {
+    if (repeatsAVertex(merged.triangles, f)) result.droppedFaces.push_back(static_cast<int>(f));
+  }
+  const SurfaceMesh faces = withoutFaces(merged, result.droppedFaces);
+  std::vector<int> unused = unreferencedVertices(faces);
+  std::set_difference(unused.begin(), unused.end(), result.copies.begin(), result.copies.end(),
+                      std::back_inserter(result.loose));
+  result.rest = removeVertices(faces, unused);
+  for (const SurfaceMesh& example : examples) {
+    const SurfaceMesh exampleFaces{example.vertices, faces.triangles};
+    result.examples.push_back(removeVertices(exampleFaces, unused));
   }
   return result;
 }
@@ -61,15 +125,19 @@ void restoreInput(ModelData& model, const SurfaceMesh& rest,
   for (std::size_t k = 0; k < examples.size(); ++k) {
     append(model.examples[k], examples[k].vertices);
   }
-  // Input vertex i: its loose row, or the row the model gave the i-th vertex
-  // of the meshed surface.
+  // Input vertex i: its loose row, the row of the vertex it is a copy of
+  // (always a smaller one), or the row the model gave the next vertex of
+  // the meshed surface.
   std::vector<int> rows;
   rows.reserve(static_cast<std::size_t>(rest.vertices.rows()));
   std::size_t nextLoose = 0;
   int kept = 0;
   for (Eigen::Index i = 0; i < rest.vertices.rows(); ++i) {
+    const int original = input.copyOf[static_cast<std::size_t>(i)];
     if (nextLoose < loose.size() && loose[nextLoose] == i) {
       rows.push_back(static_cast<int>(first + static_cast<Eigen::Index>(nextLoose++)));
+    } else if (original != i) {
+      rows.push_back(rows[static_cast<std::size_t>(original)]);
     } else {
       rows.push_back(model.inputVertexRows.empty() ? kept : model.inputVertexRows[kept]);
       ++kept;

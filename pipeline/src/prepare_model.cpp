@@ -182,19 +182,39 @@ ModelData tetrisedModel(const SurfaceMesh& rest, const std::vector<SurfaceMesh>&
   return model;
 }
 
-// prepareModel of the surfaces without the faces that repeat a vertex and
-// the vertices no face uses, which the model then gets back
-// (meshable_input.h). A refusal's numbers count the surface without them,
-// and the message says so.
+ModelData preparedAsIs(const SurfaceMesh& rest, const std::vector<SurfaceMesh>& examples,
+                       const std::string& restName, const std::vector<std::string>& exampleNames,
+                       const PrepareOptions& options, const PrepareMessages& messages);
+
+// prepareModel of the surfaces with the ends of zero-length edges merged,
+// without the faces that repeat a vertex and the vertices no face uses,
+// which the model then gets back (meshable_input.h). A refusal's numbers
+// count the surface without them, and the message says so.
 ModelData withoutUnmeshableParts(const SurfaceMesh& rest, const std::vector<SurfaceMesh>& examples,
                                  const std::string& restName,
                                  const std::vector<std::string>& exampleNames,
                                  const PrepareOptions& options, const PrepareMessages& messages) {
   const MeshableInput input = meshableInput(rest, examples, exampleNames);
+  if (input.droppedFaces.empty() && input.copies.empty() && input.loose.empty()) {
+    // Zero-length edges whose ends part in an example: left to the meshing.
+    return preparedAsIs(rest, examples, restName, exampleNames, options, messages);
+  }
   const auto plural = [](std::size_t n, const char* one, const char* many) {
     return std::to_string(n) + " " + (n == 1 ? one : many);
   };
   std::vector<std::string> setAside;
+  if (!input.copies.empty()) {
+    const std::size_t n = input.copies.size();
+    const int first = input.copies.front();
+    say(messages.note,
+        restName + ": " + plural(n, "vertex is", "vertices are") +
+            " at the same position as a neighbour in the rest and every example, joined by an "
+            "edge of zero length (first: vertex " +
+            std::to_string(first) + " at vertex " +
+            std::to_string(input.copyOf[static_cast<std::size_t>(first)]) +
+            "): merged for meshing (the blended surfaces keep the input's vertices)");
+    setAside.push_back(plural(n, "vertex", "vertices") + " merged along zero-length edges");
+  }
   if (!input.droppedFaces.empty()) {
     const std::size_t n = input.droppedFaces.size();
     say(messages.note, restName + ": " + plural(n, "face repeats", "faces repeat") +
@@ -218,7 +238,9 @@ ModelData withoutUnmeshableParts(const SurfaceMesh& rest, const std::vector<Surf
     model = prepareModel(input.rest, input.examples, restName, exampleNames, options, messages);
   } catch (const InputError& error) {
     std::string without = setAside.front();
-    if (setAside.size() > 1) without += " and its " + setAside.back();
+    for (std::size_t i = 1; i < setAside.size(); ++i) {
+      without += (i + 1 == setAside.size() ? " and its " : ", its ") + setAside[i];
+    }
     throw InputError(std::string(error.what()) +
                      " (vertex and face numbers count the surface without its " + without + ")");
   }
@@ -349,32 +371,13 @@ ModelData withComponentsTetrised(const SurfaceMesh& rest, const std::vector<Surf
   return joinedModel(meshedPart, tetrised, rest.triangles, static_cast<int>(rest.vertices.rows()));
 }
 
-}  // namespace
-
-std::size_t prepareStepCount(std::size_t exampleCount) { return exampleCount + 2; }
-
-ModelData prepareModel(const std::string& restPath, const std::vector<std::string>& examplePaths,
-                       const PrepareOptions& options, const PrepareMessages& messages) {
-  checkPrepareArguments(examplePaths.size(), options);
-  const SurfaceMesh rest = readSurface(restPath);
-  std::vector<SurfaceMesh> examples;
-  for (const std::string& path : examplePaths) examples.push_back(readSurface(path));
-  return prepareModel(rest, examples, restPath, examplePaths, options, messages);
-}
-
-ModelData prepareModel(const SurfaceMesh& rest, const std::vector<SurfaceMesh>& examples,
+// prepareModel of input without faces that repeat a vertex, zero-length
+// edges that can be merged, or vertices no face uses: the per-face
+// tetrisation, or TetGen with the seams zipped (the model keeps the input's
+// vertices and faces).
+ModelData preparedAsIs(const SurfaceMesh& rest, const std::vector<SurfaceMesh>& examples,
                        const std::string& restName, const std::vector<std::string>& exampleNames,
                        const PrepareOptions& options, const PrepareMessages& messages) {
-  checkPrepareArguments(examples.size(), options);
-  if (exampleNames.size() != examples.size()) {
-    throw InputError("prepare: " + std::to_string(exampleNames.size()) + " names given for " +
-                     std::to_string(examples.size()) + " examples");
-  }
-  const bool indicesInRange = rest.triangles.size() > 0 && rest.triangles.minCoeff() >= 0 &&
-                              rest.triangles.maxCoeff() < rest.vertices.rows();
-  if (indicesInRange && hasUnmeshableParts(rest)) {
-    return withoutUnmeshableParts(rest, examples, restName, exampleNames, options, messages);
-  }
   if (options.tetrise) {
     return tetrisedModel(rest, examples, restName, exampleNames, options, messages);
   }
@@ -497,6 +500,35 @@ ModelData prepareModel(const SurfaceMesh& rest, const std::vector<SurfaceMesh>& 
                          std::to_string(built.rounds) + " rounds; " +
                          std::to_string(model.excludedTets.size()) + " tets excluded)" + filled);
   return model;
+}
+
+}  // namespace
+
+std::size_t prepareStepCount(std::size_t exampleCount) { return exampleCount + 2; }
+
+ModelData prepareModel(const std::string& restPath, const std::vector<std::string>& examplePaths,
+                       const PrepareOptions& options, const PrepareMessages& messages) {
+  checkPrepareArguments(examplePaths.size(), options);
+  const SurfaceMesh rest = readSurface(restPath);
+  std::vector<SurfaceMesh> examples;
+  for (const std::string& path : examplePaths) examples.push_back(readSurface(path));
+  return prepareModel(rest, examples, restPath, examplePaths, options, messages);
+}
+
+ModelData prepareModel(const SurfaceMesh& rest, const std::vector<SurfaceMesh>& examples,
+                       const std::string& restName, const std::vector<std::string>& exampleNames,
+                       const PrepareOptions& options, const PrepareMessages& messages) {
+  checkPrepareArguments(examples.size(), options);
+  if (exampleNames.size() != examples.size()) {
+    throw InputError("prepare: " + std::to_string(exampleNames.size()) + " names given for " +
+                     std::to_string(examples.size()) + " examples");
+  }
+  const bool indicesInRange = rest.triangles.size() > 0 && rest.triangles.minCoeff() >= 0 &&
+                              rest.triangles.maxCoeff() < rest.vertices.rows();
+  if (indicesInRange && hasUnmeshableParts(rest)) {
+    return withoutUnmeshableParts(rest, examples, restName, exampleNames, options, messages);
+  }
+  return preparedAsIs(rest, examples, restName, exampleNames, options, messages);
 }
 
 }  // namespace tetblend

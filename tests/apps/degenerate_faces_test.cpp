@@ -45,5 +45,56 @@ TEST(DegenerateFaces, CappedRestAndExamplePrepareAndBlendExactly) {
   }
 }
 
+// Vertices 10 and 40 of the bar each split in place (a zero-length edge and
+// two faces of zero area each, as an exporter's collapsed edge leaves
+// them), the same in the rest and the twisted example: the ends are merged
+// for meshing, and every blended surface has all the input's vertices, the
+// copies where their originals are.
+TEST(DegenerateFaces, ZeroLengthEdgesAreMergedForMeshing) {
+  const fs::path dir = scratchDir();
+  makeSamples(dir);
+  SurfaceMesh rest = readSurface((dir / "bar_rest.obj").string());
+  SurfaceMesh twist = readSurface((dir / "bar_twist4pi.obj").string());
+  for (SurfaceMesh* mesh : {&rest, &twist}) {
+    testing_surfaces::splitVertexInPlace(*mesh, 10, 2);
+    testing_surfaces::splitVertexInPlace(*mesh, 40, 3);
+  }
+  ASSERT_TRUE(rest.triangles == twist.triangles);
+  writeSurface((dir / "rest.obj").string(), rest);
+  writeSurface((dir / "twist.obj").string(), twist);
+  const RunResult prepared =
+      tetblend({"prepare", (dir / "rest.obj").string(), (dir / "twist.obj").string(), "-o",
+                (dir / "m.tbm").string()},
+               dir);
+  ASSERT_EQ(prepared.code, 0) << prepared.err;
+  EXPECT_NE(prepared.err.find("2 vertices are at the same position as a neighbour in the rest and "
+                              "every example, joined by an edge of zero length (first: vertex " +
+                              std::to_string(rest.vertices.rows() - 2) + " at vertex 10)"),
+            std::string::npos)
+      << prepared.err;
+  EXPECT_NE(prepared.err.find("4 faces repeat a vertex"), std::string::npos) << prepared.err;
+  for (const auto& [w, expected] : {std::pair{"0", &rest}, std::pair{"1", &twist}}) {
+    const fs::path out = dir / (std::string("w") + w + ".vtp");
+    const RunResult r =
+        tetblend({"blend", (dir / "m.tbm").string(), "-w", w, "-o", out.string(), "--quiet"}, dir);
+    ASSERT_EQ(r.code, 0) << r.err;
+    const auto surface = readVtp(out);
+    EXPECT_LT(maxDistance(pointsOf(surface), expected->vertices), kInterpolationTolerance) << w;
+    EXPECT_EQ(surface->GetNumberOfCells(), expected->triangles.rows()) << w;
+  }
+  // Vertex 40's copy leaves it in the example: that edge has length there,
+  // so it is not merged, and the rest's faces of zero area on it are
+  // refused with one line (also without --strict: a face of zero area has
+  // no tet of its own either).
+  twist.vertices.bottomRows(1).array() += 0.01;
+  writeSurface((dir / "parted.obj").string(), twist);
+  const RunResult refused =
+      tetblend({"prepare", (dir / "rest.obj").string(), (dir / "parted.obj").string(), "-o",
+                (dir / "parted.tbm").string(), "--quiet"},
+               dir);
+  expectOneLineError(refused);
+  EXPECT_NE(refused.err.find("has area 0"), std::string::npos) << refused.err;
+}
+
 }  // namespace
 }  // namespace tetblend::apps_test

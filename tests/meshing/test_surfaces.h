@@ -109,6 +109,43 @@ inline SurfaceMesh reversed(SurfaceMesh m) {
   return m;
 }
 
+/// Splits vertex u of a closed manifold surface into u and a new last vertex
+/// w at the same position: the last `count` faces of u's fan (in its
+/// counter-clockwise order from its first face) take w instead of u, and two
+/// faces of zero area, (u, n_k, w) and (w, n_0, u), close the gap between
+/// the arcs (a vertex split of zero length: what an exporter's collapsed
+/// edge looks like). Merging w into u and dropping the two faces gives the
+/// input back.
+inline void splitVertexInPlace(SurfaceMesh& mesh, int u, int count) {
+  std::vector<std::pair<int, int>> fan;  // (face, corner of u)
+  for (int f = 0; f < mesh.triangles.rows(); ++f) {
+    for (int c = 0; c < 3; ++c) {
+      if (mesh.triangles(f, c) == u) fan.emplace_back(f, c);
+    }
+  }
+  const auto next = [&](std::size_t i) {
+    return mesh.triangles(fan[i].first, (fan[i].second + 1) % 3);
+  };
+  const auto last = [&](std::size_t i) {
+    return mesh.triangles(fan[i].first, (fan[i].second + 2) % 3);
+  };
+  for (std::size_t i = 0; i + 1 < fan.size(); ++i) {  // order: face i+1 starts where face i ends
+    for (std::size_t j = i + 1; j < fan.size(); ++j) {
+      if (next(j) == last(i)) std::swap(fan[i + 1], fan[j]);
+    }
+  }
+  const int w = static_cast<int>(mesh.vertices.rows());
+  mesh.vertices.conservativeResize(w + 1, 3);
+  mesh.vertices.row(w) = mesh.vertices.row(u);
+  const std::size_t k = fan.size() - static_cast<std::size_t>(count);
+  const int nk = next(k), n0 = next(0);
+  for (std::size_t i = k; i < fan.size(); ++i) mesh.triangles(fan[i].first, fan[i].second) = w;
+  const Eigen::Index f = mesh.triangles.rows();
+  mesh.triangles.conservativeResize(f + 2, 3);
+  mesh.triangles.row(f) << u, nk, w;
+  mesh.triangles.row(f + 1) << w, n0, u;
+}
+
 /// Splits face f's edge corner k -> corner k+1 (a -> b, third corner x) at
 /// `points` points m1..mP along it: face f becomes the fan (a, m1, x), (m1,
 /// m2, x), ..., (mP, b, x), and the run is closed against the neighbour's
