@@ -1,7 +1,7 @@
 #pragma once
-// Private to prepare: one model of two made from disjoint sets of the
-// input's faces (the components meshed with an interior, and those
-// tetrised face by face), as if prepared at once.
+// Private to prepare: one model of several made from disjoint sets of the
+// input's faces (components meshed each on its own, components tetrised
+// face by face), as if prepared at once.
 
 #include <vector>
 
@@ -17,12 +17,13 @@ struct ModelPart {
 };
 
 /// The model of the whole input (`inputTriangles`, `inputVertexCount`
-/// vertices, each in `a` or `b`; one in both takes a's row, in b's tets
-/// too, and b's copy is left in no tet) from two parts
-/// with the same examples: rows are a's surface vertices, b's, a's other
-/// vertices, b's; tets a's then b's; excluded tets of both; sources a's;
-/// inputVertexRows empty where they would be 0, 1, 2, ...
-ModelData joinedModel(const ModelPart& a, const ModelPart& b, const Triangles& inputTriangles,
+/// vertices, each in some part) from parts with the same examples: rows are
+/// the parts' surface vertices, part by part, then their other vertices;
+/// tets and excluded tets part by part; sources the first part's;
+/// inputVertexRows empty where they would be 0, 1, 2, ... An input vertex
+/// in several parts (parts touching at a vertex) takes the first one's row,
+/// in the later parts' tets too, which leave their own copy in no tet.
+ModelData joinedModel(const std::vector<ModelPart>& parts, const Triangles& inputTriangles,
                       int inputVertexCount);
 
 }  // namespace tetblend

@@ -301,12 +301,54 @@ InputPart inputPart(const SurfaceMesh& rest, const std::vector<SurfaceMesh>& exa
   return result;
 }
 
+// When meshing refused the rest (`refusal`) although each of its components
+// meshes on its own (components touching at a vertex, where their holes
+// meet): each component is prepared on its own (notes silenced, warnings
+// kept) and the models are joined. Rethrows `refusal` for one component.
+ModelData eachComponentOnItsOwn(const SurfaceMesh& rest, const std::vector<SurfaceMesh>& examples,
+                                const std::string& restName,
+                                const std::vector<std::string>& exampleNames,
+                                const PrepareOptions& options, const PrepareMessages& messages,
+                                const SeamWelding& welding, const InputError& refusal) {
+  std::vector<int> faceComponent;
+  const auto count = static_cast<int>(surfaceComponents(welding.surface, &faceComponent).size());
+  if (count < 2) throw refusal;
+  std::vector<ModelPart> parts;
+  Eigen::Index tets = 0;
+  for (int c = 0; c < count; ++c) {
+    const auto firstFace =
+        std::find(faceComponent.begin(), faceComponent.end(), c) - faceComponent.begin();
+    const std::string where = " (in its component of face " + std::to_string(firstFace) +
+                              ", prepared on its own: the numbers count that component's own "
+                              "faces, vertices and tets)";
+    PrepareMessages warningsOnly;
+    if (messages.warning) {
+      warningsOnly.warning = [&](const std::string& line) { messages.warning(line + where); };
+    }
+    InputPart part = inputPart(rest, examples, faceComponent, c);
+    ModelPart prepared{{}, std::move(part.inputVertices)};
+    try {
+      prepared.model =
+          prepareModel(part.rest, part.examples, restName, exampleNames, options, warningsOnly);
+    } catch (const InputError& error) {
+      throw InputError(std::string(error.what()) + where);
+    }
+    tets += prepared.model.rest.tets.rows();
+    parts.push_back(std::move(prepared));
+  }
+  say(messages.note, std::string(refusal.what()) + "; instead, each of its " +
+                         std::to_string(count) + " components is prepared on its own (" +
+                         roughCount(tets) + " tets in all)");
+  advance(messages, prepareStepCount(examples.size()));
+  return joinedModel(parts, rest.triangles, static_cast<int>(rest.vertices.rows()));
+}
+
 // When meshing refused the rest (`refusal`): the components that cannot be
 // meshed with an interior on their own get one tet per face (the
 // tetrisation), the others are prepared as usual, and the two models are
-// joined. Rethrows `refusal` with --no-fill-holes or --strict, when every
-// component meshes on its own (the refusal is about how they meet), or
-// when the tetrisation refuses those that do not.
+// joined; when every component meshes on its own, eachComponentOnItsOwn.
+// Rethrows `refusal` with --no-fill-holes or --strict, or when the
+// tetrisation refuses the components that do not mesh.
 ModelData withComponentsTetrised(const SurfaceMesh& rest, const std::vector<SurfaceMesh>& examples,
                                  const std::string& restName,
                                  const std::vector<std::string>& exampleNames,
@@ -315,7 +357,10 @@ ModelData withComponentsTetrised(const SurfaceMesh& rest, const std::vector<Surf
   if (!options.fillHoles || options.strict) throw refusal;
   int count = 0;
   const std::vector<int> label = componentsWithoutInterior(welding, restName, options, count);
-  if (count == 0) throw refusal;
+  if (count == 0) {
+    return eachComponentOnItsOwn(rest, examples, restName, exampleNames, options, messages, welding,
+                                 refusal);
+  }
   for (std::size_t k = 0; k < examples.size(); ++k) {
     requireCompatibleExample(rest, examples[k], exampleNames[k]);
   }
@@ -368,7 +413,8 @@ ModelData withComponentsTetrised(const SurfaceMesh& rest, const std::vector<Surf
   }
   meshedPart.model.restSource = restName;
   meshedPart.model.exampleSources = exampleNames;
-  return joinedModel(meshedPart, tetrised, rest.triangles, static_cast<int>(rest.vertices.rows()));
+  return joinedModel({meshedPart, tetrised}, rest.triangles,
+                     static_cast<int>(rest.vertices.rows()));
 }
 
 // prepareModel of input without faces that repeat a vertex, zero-length

@@ -12,6 +12,7 @@
 #include "tetblend/core/constants.h"
 #include "tetblend/core/tet_geometry.h"
 #include "tetblend/meshing/procedural_shapes.h"
+#include "tetblend/meshing/surface_validation.h"
 #include "tetblend/pipeline/model_file.h"
 
 namespace tetblend::apps_test {
@@ -122,6 +123,51 @@ TEST_F(OpenRest, TouchingHolesFallBackToATetPerFace) {
                                      dir_);
   expectOneLineError(refused);
   EXPECT_NE(refused.err.find(reason), std::string::npos) << refused.err;
+}
+
+TEST_F(OpenRest, TubesTouchingAtARimVertexArePreparedEachOnItsOwn) {
+  // A second tube on top of the first, one diameter aside: its bottom ring
+  // touches the first's top ring at one point, where the two share a vertex
+  // (one index). The holes touch there, so the two cannot be filled
+  // together, but each can.
+  SurfaceMesh upper = tube_.mesh;
+  upper.vertices.col(0).array() += 1.0;
+  upper.vertices.col(2).array() += 4.0;
+  SurfaceMesh pair = testing_surfaces::join(tube_.mesh, upper);
+  const int shared = tube_.vertex(8, 0);
+  const auto joinedAway =
+      static_cast<int>(tube_.mesh.vertices.rows()) + tube_.vertex(0, kSegments / 2);
+  for (Eigen::Index i = 0; i < pair.triangles.size(); ++i) {
+    if (pair.triangles.data()[i] == joinedAway) pair.triangles.data()[i] = shared;
+  }
+  const SurfaceMesh rest = removeVertices(pair, {joinedAway});
+  const SurfaceMesh bent{
+      bendAboutAxis(rest.vertices, Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitZ(),
+                    Eigen::Vector3d::UnitX(), 0.5 * kPi, 8.0),
+      rest.triangles};
+  writeSurface(path("pair.obj"), rest);
+  writeSurface(path("pair_bent.obj"), bent);
+  const fs::path model = dir_ / "pair.tbm";
+  const RunResult r =
+      tetblend({"prepare", path("pair.obj"), path("pair_bent.obj"), "-o", model.string()}, dir_);
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.err.find("instead, each of its 2 components is prepared on its own"),
+            std::string::npos)
+      << r.err;
+  // Both tubes have interiors, and both use one row for the shared vertex.
+  const ModelData m = readModelFile(model.string());
+  EXPECT_GT(m.rest.vertices.rows(), rest.vertices.rows() + 1);
+  std::vector<int> uses(static_cast<std::size_t>(m.rest.vertices.rows()), 0);
+  for (Eigen::Index t = 0; t < m.rest.tets.rows(); ++t) {
+    for (int c = 0; c < 4; ++c) ++uses[static_cast<std::size_t>(m.rest.tets(t, c))];
+  }
+  EXPECT_EQ(std::count(uses.begin(), uses.end(), 0), 1);
+  for (const auto& [w, expected] : {std::pair{"0", &rest}, std::pair{"1", &bent}}) {
+    const fs::path out = dir_ / (std::string("pair") + w + ".vtp");
+    ASSERT_EQ(tetblend({"blend", model.string(), "-w", w, "-o", out.string()}, dir_).code, 0);
+    EXPECT_LT(maxDistance(pointsOf(readVtp(out)), expected->vertices),
+              kInterpolationRelTol * boundingBoxDiagonal(rest.vertices));
+  }
 }
 
 TEST_F(OpenRest, FillThroughTheSurfaceFallsBackToATetPerFace) {
