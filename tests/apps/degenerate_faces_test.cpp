@@ -19,22 +19,19 @@ SurfaceMesh withCaps(SurfaceMesh mesh) {
   return mesh;
 }
 
-TEST(DegenerateFaces, CappedRestAndExamplePrepareAndBlendExactly) {
-  const fs::path dir = scratchDir();
-  makeSamples(dir);
-  const SurfaceMesh rest = withCaps(readSurface((dir / "bar_rest.obj").string()));
-  const SurfaceMesh twist = withCaps(readSurface((dir / "bar_twist4pi.obj").string()));
+// Writes rest.obj and twist.obj into `dir` and prepares them into m.tbm.
+RunResult writeAndPrepare(const fs::path& dir, const SurfaceMesh& rest, const SurfaceMesh& twist) {
   writeSurface((dir / "rest.obj").string(), rest);
   writeSurface((dir / "twist.obj").string(), twist);
-  const RunResult prepared =
-      tetblend({"prepare", (dir / "rest.obj").string(), (dir / "twist.obj").string(), "-o",
-                (dir / "m.tbm").string()},
-               dir);
-  ASSERT_EQ(prepared.code, 0) << prepared.err;
-  EXPECT_NE(prepared.err.find("5 faces of (almost) zero area are re-split with a neighbour"),
-            std::string::npos)
-      << prepared.err;
-  for (const auto& [w, expected] : {std::pair{"0", &rest}, std::pair{"1", &twist}}) {
+  return tetblend({"prepare", (dir / "rest.obj").string(), (dir / "twist.obj").string(), "-o",
+                   (dir / "m.tbm").string()},
+                  dir);
+}
+
+// Blends of dir/m.tbm at weights 0 and 1 give `rest` and `example` at every
+// vertex, with every face.
+void expectTheKeysBack(const fs::path& dir, const SurfaceMesh& rest, const SurfaceMesh& example) {
+  for (const auto& [w, expected] : {std::pair{"0", &rest}, std::pair{"1", &example}}) {
     const fs::path out = dir / (std::string("w") + w + ".vtp");
     const RunResult r =
         tetblend({"blend", (dir / "m.tbm").string(), "-w", w, "-o", out.string(), "--quiet"}, dir);
@@ -43,6 +40,19 @@ TEST(DegenerateFaces, CappedRestAndExamplePrepareAndBlendExactly) {
     EXPECT_LT(maxDistance(pointsOf(surface), expected->vertices), kInterpolationTolerance) << w;
     EXPECT_EQ(surface->GetNumberOfCells(), expected->triangles.rows()) << w;
   }
+}
+
+TEST(DegenerateFaces, CappedRestAndExamplePrepareAndBlendExactly) {
+  const fs::path dir = scratchDir();
+  makeSamples(dir);
+  const SurfaceMesh rest = withCaps(readSurface((dir / "bar_rest.obj").string()));
+  const SurfaceMesh twist = withCaps(readSurface((dir / "bar_twist4pi.obj").string()));
+  const RunResult prepared = writeAndPrepare(dir, rest, twist);
+  ASSERT_EQ(prepared.code, 0) << prepared.err;
+  EXPECT_NE(prepared.err.find("5 faces of (almost) zero area are re-split with a neighbour"),
+            std::string::npos)
+      << prepared.err;
+  expectTheKeysBack(dir, rest, twist);
 }
 
 // Vertices 10 and 40 of the bar each split in place (a zero-length edge and
@@ -60,12 +70,7 @@ TEST(DegenerateFaces, ZeroLengthEdgesAreMergedForMeshing) {
     testing_surfaces::splitVertexInPlace(*mesh, 40, 3);
   }
   ASSERT_TRUE(rest.triangles == twist.triangles);
-  writeSurface((dir / "rest.obj").string(), rest);
-  writeSurface((dir / "twist.obj").string(), twist);
-  const RunResult prepared =
-      tetblend({"prepare", (dir / "rest.obj").string(), (dir / "twist.obj").string(), "-o",
-                (dir / "m.tbm").string()},
-               dir);
+  const RunResult prepared = writeAndPrepare(dir, rest, twist);
   ASSERT_EQ(prepared.code, 0) << prepared.err;
   EXPECT_NE(prepared.err.find("2 vertices are at the same position as a neighbour in the rest and "
                               "every example, joined by an edge of zero length (first: vertex " +
@@ -73,15 +78,7 @@ TEST(DegenerateFaces, ZeroLengthEdgesAreMergedForMeshing) {
             std::string::npos)
       << prepared.err;
   EXPECT_NE(prepared.err.find("4 faces repeat a vertex"), std::string::npos) << prepared.err;
-  for (const auto& [w, expected] : {std::pair{"0", &rest}, std::pair{"1", &twist}}) {
-    const fs::path out = dir / (std::string("w") + w + ".vtp");
-    const RunResult r =
-        tetblend({"blend", (dir / "m.tbm").string(), "-w", w, "-o", out.string(), "--quiet"}, dir);
-    ASSERT_EQ(r.code, 0) << r.err;
-    const auto surface = readVtp(out);
-    EXPECT_LT(maxDistance(pointsOf(surface), expected->vertices), kInterpolationTolerance) << w;
-    EXPECT_EQ(surface->GetNumberOfCells(), expected->triangles.rows()) << w;
-  }
+  expectTheKeysBack(dir, rest, twist);
   // Vertex 40's copy leaves it in the example: that edge has length there,
   // so it is not merged, and the rest's faces of zero area on it are
   // refused with one line (also without --strict: a face of zero area has

@@ -5,7 +5,7 @@
 // and each example at unit weights, over every input vertex in the input's
 // order. --strict refuses the sheet instead.
 
-#include "apps_test_support.h"
+#include "posed_rest_fixture.h"
 #include "test_surfaces.h"
 #include "tetblend/core/constants.h"
 #include "tetblend/core/tet_geometry.h"
@@ -15,9 +15,6 @@
 namespace tetblend::apps_test {
 namespace {
 
-// The promise: unit weights reproduce each example at the surface to
-// 1e-9 of the bounding-box diagonal (round-off is ~1e-13 on this mesh).
-constexpr double kInterpolationRelTol = 1e-9;
 constexpr int kSheetCells = 6;  // the sheet: 6 × 6 squares, 72 faces
 
 // A flat grid of kSheetCells² squares at height z, x in [-1.5, 1.5] and y
@@ -42,32 +39,18 @@ SurfaceMesh flatSheet(double z) {
   return sheet;
 }
 
-class TetrisedComponents : public ::testing::Test {
+// A body (an ellipsoid 4 by 1 by 1) and a flat sheet above it, the sheet
+// first: the model's rows (body surface first) then differ from the
+// input's order.
+class TetrisedComponents : public PosedRest {
  protected:
   void SetUp() override {
-    dir_ = scratchDir();
+    PosedRest::SetUp();
     SurfaceMesh body = testing_surfaces::icosphere(3);
     body.vertices.col(0) *= 2.0;
     body.vertices.rightCols(2) *= 0.5;
-    // The sheet first: the model's rows (body surface first) then differ
-    // from the input's order.
-    rest_ = testing_surfaces::join(flatSheet(0.8), body);
-    const Eigen::Vector3d origin(-2.0, 0.0, 0.0), axis = Eigen::Vector3d::UnitX();
-    write("rest.obj", rest_.vertices);
-    write("twist.obj", twistAboutAxis(rest_.vertices, origin, axis, kPi, 4.0));
-    write("bend.obj",
-          bendAboutAxis(rest_.vertices, origin, axis, Eigen::Vector3d::UnitY(), 0.5 * kPi, 4.0));
+    writePoses(testing_surfaces::join(flatSheet(0.8), body));
   }
-  void write(const std::string& name, const Vertices& vertices) const {
-    writeSurface(path(name), SurfaceMesh{vertices, rest_.triangles});
-  }
-  std::string path(const std::string& name) const { return (dir_ / name).string(); }
-  std::vector<std::string> prepareArgs(const std::string& model) const {
-    return {"prepare", path("rest.obj"), path("twist.obj"), path("bend.obj"), "-o", path(model)};
-  }
-
-  fs::path dir_;
-  SurfaceMesh rest_;
 };
 
 TEST_F(TetrisedComponents, TheSheetGetsATetPerFaceAndTheBodyAnInterior) {
@@ -97,20 +80,7 @@ TEST_F(TetrisedComponents, TheSheetGetsATetPerFaceAndTheBodyAnInterior) {
 
 TEST_F(TetrisedComponents, BlendsGiveTheRestAndEveryExample) {
   ASSERT_EQ(tetblend(prepareArgs("cape.tbm"), dir_).code, 0);
-  const std::vector<std::pair<std::string, std::string>> cases = {
-      {"0,0", "rest.obj"}, {"1,0", "twist.obj"}, {"0,1", "bend.obj"}};
-  for (const std::string method : {"kaji", "liebodies", "dq"}) {
-    for (const auto& [weights, expected] : cases) {
-      SCOPED_TRACE(method + " at " + weights);
-      const std::string out = path(method + weights.substr(0, 1) + weights.substr(2) + ".vtp");
-      const RunResult r =
-          tetblend({"blend", path("cape.tbm"), "-w", weights, "--method", method, "-o", out}, dir_);
-      ASSERT_EQ(r.code, 0) << r.err;
-      const SurfaceMesh target = readSurface(path(expected));
-      EXPECT_LT(maxDistance(pointsOf(readVtp(out)), target.vertices),
-                kInterpolationRelTol * boundingBoxDiagonal(target.vertices));
-    }
-  }
+  expectTheKeysBack("cape.tbm");
 }
 
 // The sheet's corner is one of the body's vertices: the sheet's tets use the
@@ -155,7 +125,7 @@ TEST(TetrisedComponentsAttached, ASheetSharingAVertexUsesTheBodysRow) {
   const std::string out = (dir / "one.vtp").string();
   ASSERT_EQ(tetblend({"blend", model, "-w", "1", "-o", out}, dir).code, 0);
   EXPECT_LT(maxDistance(pointsOf(readVtp(out)), twist.vertices),
-            kInterpolationRelTol * boundingBoxDiagonal(twist.vertices));
+            kPosedRestInterpolationRelTol * boundingBoxDiagonal(twist.vertices));
 }
 
 TEST_F(TetrisedComponents, StrictRefusesTheSheet) {

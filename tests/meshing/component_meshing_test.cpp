@@ -82,17 +82,6 @@ Head headWithEyeAndTooth() {
   return head;
 }
 
-std::vector<std::array<int, 3>> sortedFaces(const Triangles& triangles) {
-  std::vector<std::array<int, 3>> faces;
-  for (Eigen::Index f = 0; f < triangles.rows(); ++f) {
-    std::array<int, 3> face{triangles(f, 0), triangles(f, 1), triangles(f, 2)};
-    std::rotate(face.begin(), std::min_element(face.begin(), face.end()), face.end());
-    faces.push_back(face);
-  }
-  std::sort(faces.begin(), faces.end());
-  return faces;
-}
-
 TEST(ComponentMeshing, OverlappingComponentsIntersectOnlyAcrossComponents) {
   const Head head = headWithEyeAndTooth();
   const SelfIntersections all =
@@ -130,7 +119,8 @@ TEST(ComponentMeshing, EachComponentIsMeshedWholeAndTheSurfaceKept) {
   const Eigen::Index surfaceCount = head.surface.vertices.rows();
   ASSERT_GE(mesh.vertices.rows(), surfaceCount);
   EXPECT_TRUE(mesh.vertices.topRows(surfaceCount) == head.surface.vertices);
-  EXPECT_EQ(sortedFaces(boundarySurface(mesh).triangles), sortedFaces(head.surface.triangles));
+  EXPECT_EQ(testing_surfaces::sortedFaces(boundarySurface(mesh).triangles),
+            testing_surfaces::sortedFaces(head.surface.triangles));
   double volume = 0.0;
   for (Eigen::Index t = 0; t < mesh.tets.rows(); ++t) {
     const double v = tetSignedVolume(mesh.vertices, mesh.tets.row(t));

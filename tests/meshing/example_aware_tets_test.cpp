@@ -11,6 +11,7 @@
 #include <array>
 #include <vector>
 
+#include "test_surfaces.h"
 #include "tetblend/core/constants.h"
 #include "tetblend/core/tet_geometry.h"
 #include "tetblend/meshing/pose_corpus.h"
@@ -19,7 +20,6 @@
 #include "tetblend/meshing/surface_validation.h"
 #include "tetblend/meshing/tet_boundary.h"
 #include "tetblend/meshing/tetgen_mesher.h"
-#include "test_surfaces.h"
 
 namespace tetblend {
 namespace {
@@ -33,17 +33,6 @@ double totalVolume(const TetMesh& mesh) {
   for (Eigen::Index t = 0; t < mesh.tets.rows(); ++t)
     sum += tetSignedVolume(mesh.vertices, mesh.tets.row(t));
   return sum;
-}
-
-std::vector<std::array<int, 3>> sortedFaces(const Triangles& triangles) {
-  std::vector<std::array<int, 3>> faces;
-  for (Eigen::Index f = 0; f < triangles.rows(); ++f) {
-    std::array<int, 3> face{triangles(f, 0), triangles(f, 1), triangles(f, 2)};
-    std::rotate(face.begin(), std::min_element(face.begin(), face.end()), face.end());
-    faces.push_back(face);
-  }
-  std::sort(faces.begin(), faces.end());
-  return faces;
 }
 
 // The samples' square bar (4 by 0.6 by 0.6, 32 by 3 by 3 cells on its
@@ -98,7 +87,8 @@ TEST(ExampleAwareTets, SteinerPointsRepairAllSurfaceTets) {
   // The surface is kept bit for bit: the same leading vertices, the same
   // boundary faces; the solid is the same.
   EXPECT_TRUE(built.rest.vertices.topRows(surfaceCount) == bar.surface.vertices);
-  EXPECT_EQ(sortedFaces(boundarySurface(built.rest).triangles), sortedFaces(bar.surface.triangles));
+  EXPECT_EQ(testing_surfaces::sortedFaces(boundarySurface(built.rest).triangles),
+            testing_surfaces::sortedFaces(bar.surface.triangles));
   EXPECT_NEAR(totalVolume(built.rest), totalVolume(bar.rest),
               kVolumeRelTol * totalVolume(bar.rest));
   for (Eigen::Index t = 0; t < built.rest.tets.rows(); ++t) {

@@ -92,6 +92,19 @@ inline SurfaceMesh cube(const Eigen::Vector3d& lo = Eigen::Vector3d::Zero(), dou
   return m;
 }
 
+/// The faces as sorted triples, each rotated to start at its smallest index
+/// (orientation kept): two surfaces have the same faces when these agree.
+inline std::vector<std::array<int, 3>> sortedFaces(const Triangles& triangles) {
+  std::vector<std::array<int, 3>> faces;
+  for (Eigen::Index f = 0; f < triangles.rows(); ++f) {
+    std::array<int, 3> face{triangles(f, 0), triangles(f, 1), triangles(f, 2)};
+    std::rotate(face.begin(), std::min_element(face.begin(), face.end()), face.end());
+    faces.push_back(face);
+  }
+  std::sort(faces.begin(), faces.end());
+  return faces;
+}
+
 /// Concatenation of two surfaces (b's indices shifted).
 inline SurfaceMesh join(const SurfaceMesh& a, const SurfaceMesh& b) {
   SurfaceMesh m;
