@@ -175,10 +175,35 @@ std::optional<SurfaceSeparation> separatedSurface(const MeshedRest& meshed,
   return whole;
 }
 
+// Of `examples`, nearest the rest first (sum of squared distances), the
+// first whose positions make `meshed`'s surface, oriented outward for them
+// (a rest that crosses itself may have turned it inside out), one that
+// bounds a solid (validateSurface: closed, outward, no self-intersection);
+// `meshed` then holds it. -1 when there is none.
+int meshOnCleanExample(SurfaceMesh& meshed, const std::vector<Vertices>& examples,
+                       const std::string& restName) {
+  std::vector<std::pair<double, int>> byDistance;
+  for (std::size_t k = 0; k < examples.size(); ++k) {
+    if (examples[k].rows() != meshed.vertices.rows()) continue;
+    byDistance.emplace_back((examples[k] - meshed.vertices).squaredNorm(), static_cast<int>(k));
+  }
+  std::sort(byDistance.begin(), byDistance.end());
+  SurfaceValidationOptions validation;
+  validation.maxSelfIntersectionPairs = 1;
+  for (const auto& [distance, k] : byDistance) {
+    SurfaceMesh posed{examples[static_cast<std::size_t>(k)], meshed.triangles};
+    orientWherePossible(posed);
+    if (!validateSurface(posed, restName, validation).ok()) continue;
+    meshed = std::move(posed);
+    return k;
+  }
+  return -1;
+}
+
 }  // namespace
 
 MeshedRest meshedRest(const SurfaceMesh& rest, const std::string& restName,
-                      const PrepareOptions& options) {
+                      const PrepareOptions& options, const std::vector<Vertices>& examples) {
   MeshedRest meshed;
   SurfaceMesh oriented = rest;
   orientWherePossible(oriented);
@@ -218,6 +243,15 @@ MeshedRest meshedRest(const SurfaceMesh& rest, const std::string& restName,
   meshed.firstPair = found.pairs.front();
   const SurfaceSeparationOptions separation;
   const auto separated = separatedSurface(meshed, separation);
+  if (!separated && meshed.faceComponent.empty()) {
+    meshed.meshedOnExample = meshOnCleanExample(meshed.surface, examples, restName);
+  }
+  if (meshed.meshedOnExample >= 0) {
+    meshed.separated = true;
+    meshed.reorientedFaces =
+        differingRows(meshed.surface.triangles.topRows(userFaces), rest.triangles);
+    return meshed;
+  }
   if (!separated) {
     throw InputError(restName + ": faces " + std::to_string(meshed.firstPair.first) + " and " +
                      std::to_string(meshed.firstPair.second) + " intersect (" +

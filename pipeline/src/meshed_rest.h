@@ -30,6 +30,9 @@ struct MeshedRest {
   std::pair<int, int> firstPair{-1, -1};  ///< its first intersecting faces
   int movedVertices = 0;                  ///< by the separation
   double largestDisplacement = 0.0;       ///< by the separation, file units
+  /// When the separation fails: the example whose positions `surface`
+  /// holds instead (the one nearest the rest that bounds a solid), or -1.
+  int meshedOnExample = -1;
   /// Closed components that intersect one another are meshed each on its
   /// own (component_meshing.h), every one oriented outward: per face of
   /// `surface`, its component (empty when the surface is meshed whole).
@@ -42,12 +45,13 @@ struct MeshedRest {
 /// or against their neighbours are reversed for meshing; holes are filled
 /// unless options.fillHoles is off; closed components that intersect one
 /// another are meshed each on its own; a rest that intersects itself within
-/// a component is separated unless options.strict. Throws InputError with the first problem
-/// when the rest cannot be meshed: non-manifold, open with fillHoles off, a
-/// hole fill that cuts the surface, or self-intersections too deep to
-/// separate (or any, with strict). Not for the tetrisation, which meshes the
-/// user's faces as they are.
+/// a component is separated unless options.strict, or, when it intersects
+/// itself too deeply, meshed on the nearest of `examples` (positions of
+/// the rest's vertices) whose closed surface bounds a solid. Throws InputError with the first
+/// problem when the rest cannot be meshed: non-manifold, open with fillHoles off, a hole fill that
+/// cuts the surface, or self-intersections too deep to separate (or any, with strict). Not for the
+/// tetrisation, which meshes the user's faces as they are.
 MeshedRest meshedRest(const SurfaceMesh& rest, const std::string& restName,
-                      const PrepareOptions& options);
+                      const PrepareOptions& options, const std::vector<Vertices>& examples = {});
 
 }  // namespace tetblend

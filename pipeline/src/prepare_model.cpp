@@ -70,18 +70,27 @@ double worstVolumeRatio(const TetMesh& rest, const CompatibleTetResult& placed) 
 
 // The warning for a rest that intersects itself: what was meshed instead,
 // and the tets of the rest that its embedding leaves inverted.
-std::string separatedRestWarning(const std::string& restName, const MeshedRest& meshed,
-                                 const TetMesh& tets, const CompatibleTetResult& embedded) {
+std::string separatedRestWarning(const std::string& restName,
+                                 const std::vector<std::string>& exampleNames,
+                                 const MeshedRest& meshed, const TetMesh& tets,
+                                 const CompatibleTetResult& embedded) {
   const Vertices& v = meshed.surface.vertices;
   const double diagonal = (v.colwise().maxCoeff() - v.colwise().minCoeff()).norm();
   std::string line =
       restName + ": its surface intersects itself at " + std::to_string(meshed.intersectingPairs) +
       " face pair" + (meshed.intersectingPairs > 1 ? "s" : "") + ", first faces " +
-      std::to_string(meshed.firstPair.first) + " and " + std::to_string(meshed.firstPair.second) +
-      "; the tets were made on a copy with " + std::to_string(meshed.movedVertices) +
-      " vertices moved apart by at most " + threeDigits(meshed.largestDisplacement) + " (" +
-      threeDigits(100.0 * meshed.largestDisplacement / diagonal) +
-      " % of the bounding-box diagonal), and the rest is embedded in them";
+      std::to_string(meshed.firstPair.first) + " and " + std::to_string(meshed.firstPair.second);
+  if (meshed.meshedOnExample >= 0) {
+    line += ", too deeply to separate; the tets were made on the surface of " +
+            exampleNames[static_cast<std::size_t>(meshed.meshedOnExample)] +
+            " (the example nearest the rest that bounds a solid), and the rest is embedded in "
+            "them";
+  } else {
+    line += "; the tets were made on a copy with " + std::to_string(meshed.movedVertices) +
+            " vertices moved apart by at most " + threeDigits(meshed.largestDisplacement) + " (" +
+            threeDigits(100.0 * meshed.largestDisplacement / diagonal) +
+            " % of the bounding-box diagonal), and the rest is embedded in them";
+  }
   if (embedded.invertedTets.empty()) return line + " with no tet inverted";
   return line + "; " + std::to_string(embedded.invertedTets.size()) +
          " tets of the rest cannot be embedded (worst volume ratio " +
@@ -119,12 +128,28 @@ void refuseSelfIntersecting(const Triangles& triangles, const std::vector<Surfac
   }
 }
 
+// Each example on the zipped surface's vertices, or no rows where it does
+// not fit the rest (checkExamples names the problem later).
+std::vector<Vertices> zippedPositions(const SurfaceMesh& rest, const SeamWelding& welding,
+                                      const std::vector<SurfaceMesh>& examples,
+                                      const std::vector<std::string>& exampleNames) {
+  std::vector<Vertices> positions(examples.size());
+  for (std::size_t k = 0; k < examples.size(); ++k) {
+    if (examples[k].vertices.rows() != rest.vertices.rows()) continue;
+    try {
+      positions[k] = weldedPositions(welding, examples[k].vertices, exampleNames[k]);
+    } catch (const InputError&) {
+    }
+  }
+  return positions;
+}
+
 // The meshed rest of the zipped surface; a refusal's vertex numbers then
 // count the zipped surface's vertices, and the message says so.
 MeshedRest meshedZippedRest(const SeamWelding& welding, const std::string& restName,
-                            const PrepareOptions& options) {
+                            const PrepareOptions& options, const std::vector<Vertices>& examples) {
   try {
-    return meshedRest(welding.surface, restName, options);
+    return meshedRest(welding.surface, restName, options, examples);
   } catch (const InputError& error) {
     if (welding.mergedVertices == 0) throw;
     throw InputError(std::string(error.what()) + " (vertex numbers count the surface after " +
@@ -430,9 +455,10 @@ ModelData preparedAsIs(const SurfaceMesh& rest, const std::vector<SurfaceMesh>& 
   // TetGen meshes the rest with its seams zipped; the model keeps the
   // input's vertices and faces.
   const SeamWelding welding = weldSeams(rest);
+  const std::vector<Vertices> candidates = zippedPositions(rest, welding, examples, exampleNames);
   MeshedRest meshed;
   try {
-    meshed = meshedZippedRest(welding, restName, options);
+    meshed = meshedZippedRest(welding, restName, options, candidates);
   } catch (const InputError& refusal) {
     return withComponentsTetrised(rest, examples, restName, exampleNames, options, messages,
                                   welding, refusal);
@@ -504,7 +530,8 @@ ModelData preparedAsIs(const SurfaceMesh& rest, const std::vector<SurfaceMesh>& 
       });
   if (meshed.separated) {
     const CompatibleTetResult& embedded = built.examples.front();
-    say(messages.warning, separatedRestWarning(restName, meshed, built.rest, embedded));
+    say(messages.warning,
+        separatedRestWarning(restName, exampleNames, meshed, built.rest, embedded));
     model.excludedTets = embedded.invertedTets;
   }
   for (std::size_t k = 0; k < examples.size(); ++k) {

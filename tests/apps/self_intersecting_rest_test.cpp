@@ -201,5 +201,51 @@ TEST(SelfIntersectingRestRefused, DeepOverlapFallsBackToATetPerFace) {
   EXPECT_EQ(listDir(dir), before);
 }
 
+// The same pushed sphere as the rest of two examples: itself stretched (it
+// intersects itself too) and the round sphere twisted by 90°. The tets are
+// made on the one that bounds a solid and the rest is embedded in them:
+// an interior, not a tet per face, and still the rest and each example at
+// the keys; the rest's inverted tets are excluded.
+TEST(SelfIntersectingRestRefused, DeepOverlapIsMeshedOnACleanExample) {
+  const fs::path dir = scratchDir();
+  const SurfaceMesh round = testing_surfaces::icosphere(3);
+  SurfaceMesh pushedCap = round;
+  for (Eigen::Index v = 0; v < pushedCap.vertices.rows(); ++v) {
+    if (pushedCap.vertices(v, 0) > 0.2) pushedCap.vertices(v, 0) -= 1.6;
+  }
+  const SurfaceMesh& pushed = pushedCap;
+  const SurfaceMesh stretched{pushed.vertices * Eigen::Vector3d(1.0, 1.0, 1.5).asDiagonal(),
+                              pushed.triangles};
+  const SurfaceMesh twisted{twistAboutAxis(round.vertices, Eigen::Vector3d(0, 0, -1),
+                                           Eigen::Vector3d::UnitZ(), 0.5 * kPi, 2.0),
+                            round.triangles};
+  for (const auto& [name, mesh] :
+       {std::pair{"pushed.obj", &pushed}, std::pair{"stretched.obj", &stretched},
+        std::pair{"twisted.obj", &twisted}}) {
+    writeSurface((dir / name).string(), *mesh);
+  }
+  const std::string model = (dir / "m.tbm").string();
+  const RunResult r =
+      tetblend({"prepare", (dir / "pushed.obj").string(), (dir / "stretched.obj").string(),
+                (dir / "twisted.obj").string(), "-o", model},
+               dir);
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.err.find("too deeply to separate; the tets were made on the surface of " +
+                       (dir / "twisted.obj").string()),
+            std::string::npos)
+      << r.err;
+  const ModelData m = readModelFile(model);
+  EXPECT_GT(m.rest.vertices.rows(), pushed.vertices.rows());  // an interior
+  EXPECT_FALSE(m.excludedTets.empty());
+  for (const auto& [w, expected] :
+       {std::pair{"0,0", &pushed}, std::pair{"1,0", &stretched}, std::pair{"0,1", &twisted}}) {
+    const std::string out = (dir / "key.vtp").string();
+    ASSERT_EQ(tetblend({"blend", model, "-w", w, "-o", out, "--quiet"}, dir).code, 0) << w;
+    EXPECT_LT(maxDistance(pointsOf(readVtp(out)), expected->vertices),
+              kInterpolationRelTol * boundingBoxDiagonal(pushed.vertices))
+        << w;
+  }
+}
+
 }  // namespace
 }  // namespace tetblend::apps_test
