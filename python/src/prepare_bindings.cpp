@@ -65,8 +65,10 @@ void bindPrepare(py::module_& m) {
         "triangle instead of TetGen (no interior). fill_holes: close the holes of an open\n"
         "rest with triangles between its boundary vertices before TetGen runs (default True;\n"
         "Model.surface_triangles stays the input's); False refuses an open rest. strict:\n"
-        "refuse examples whose tets cannot all be embedded (default: exclude those tets,\n"
-        "with a UserWarning).\n"
+        "refuse examples whose tets cannot all be embedded, a rest that intersects itself\n"
+        "and parts of the rest no interior fits (default: exclude those tets with a\n"
+        "UserWarning, mesh a separated copy or a clean example, give those parts a tet per\n"
+        "face).\n"
         "Raises InputError naming the array and the element at fault.");
 }
 
