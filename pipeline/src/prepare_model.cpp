@@ -4,9 +4,10 @@
 #include <cmath>
 #include <cstdio>
 
+#include "component_fallbacks.h"
 #include "meshable_input.h"
 #include "meshed_rest.h"
-#include "model_join.h"
+#include "prepare_steps.h"
 #include "tetblend/core/error.h"
 #include "tetblend/core/tet_geometry.h"
 #include "tetblend/meshing/component_meshing.h"
@@ -15,47 +16,25 @@
 #include "tetblend/meshing/seam_welding.h"
 #include "tetblend/meshing/self_intersection.h"
 #include "tetblend/meshing/surface_io.h"
-#include "tetblend/meshing/surface_orientation.h"
 #include "tetblend/meshing/surface_validation.h"
 #include "tetblend/meshing/tetgen_mesher.h"
-#include "tetblend/meshing/tetrisation.h"
 #include "tetblend/pipeline/format_number.h"
 
 namespace tetblend {
 namespace {
 
-void say(const std::function<void(const std::string&)>& sink, const std::string& line) {
-  if (sink) sink(line);
-}
-
-void advance(const PrepareMessages& messages, std::size_t steps) {
-  if (messages.step) messages.step(steps);
-}
-
-// "1.34 M" / "134 k" / "950": a tet count people read at a glance.
-std::string roughCount(long long n) {
-  if (n >= 1000000) return formatNumber(std::round(n / 1e4) / 100) + " M";
-  if (n >= 10000) return formatNumber(std::round(n / 1e3)) + " k";
-  return std::to_string(n);
-}
+using prepare_steps::advance;
+using prepare_steps::checkExamples;
+using prepare_steps::diagnosis;
+using prepare_steps::refuseSelfIntersecting;
+using prepare_steps::roughCount;
+using prepare_steps::say;
+using prepare_steps::tetrisedModel;
 
 std::string threeDigits(double value) {
   char buffer[32];
   std::snprintf(buffer, sizeof buffer, "%.3g", value);
   return buffer;
-}
-
-// Why an example's tets cannot be embedded, in words: its surface intersects
-// itself (how many face pairs, the first), or the placement failed.
-std::string diagnosis(const SelfIntersections& found) {
-  if (found.pairCount == 0) {
-    return "its surface does not intersect itself, but the interior could not be placed "
-           "without inverting them (a finer rest mesh, --max-volume, may help)";
-  }
-  return "its surface intersects itself at " + std::to_string(found.pairCount) + " face pair" +
-         (found.pairCount > 1 ? "s" : "") + ", first faces " +
-         std::to_string(found.pairs.front().first) + " and " +
-         std::to_string(found.pairs.front().second);
 }
 
 // Smallest signed volume ratio (example / rest) over the listed tets.
@@ -108,26 +87,6 @@ void checkPrepareArguments(std::size_t exampleCount, const PrepareOptions& optio
   }
 }
 
-// --strict fails fast: an example whose surface intersects itself is refused
-// before any meshing, since some of its tets can never be embedded. With
-// `faceComponent` (components meshed each on its own), only faces of one
-// component count.
-void refuseSelfIntersecting(const Triangles& triangles, const std::vector<SurfaceMesh>& examples,
-                            const std::vector<std::string>& exampleNames,
-                            const std::vector<int>& faceComponent = {}) {
-  for (std::size_t k = 0; k < examples.size(); ++k) {
-    const SelfIntersections found =
-        faceComponent.empty()
-            ? findSelfIntersections(examples[k].vertices, triangles, 1)
-            : findSelfIntersections(examples[k].vertices, triangles, 1, faceComponent);
-    if (found.pairCount > 0) {
-      throw InputError(exampleNames[k] + ": " + diagnosis(found) +
-                       ", so some tets cannot be embedded: repair the pose, or leave out --strict "
-                       "to exclude those tets from the stitch");
-    }
-  }
-}
-
 // Each example on the zipped surface's vertices, or no rows where it does
 // not fit the rest (checkExamples names the problem later).
 std::vector<Vertices> zippedPositions(const SurfaceMesh& rest, const SeamWelding& welding,
@@ -156,55 +115,6 @@ MeshedRest meshedZippedRest(const SeamWelding& welding, const std::string& restN
                      std::to_string(welding.mergedVertices) +
                      " copies of seam vertices were merged)");
   }
-}
-
-// Refuses an example that is not the rest's surface; warns about one whose
-// quads are split the other way, and about one equal to the rest.
-void checkExamples(const SurfaceMesh& rest, const std::vector<SurfaceMesh>& examples,
-                   const std::string& restName, const std::vector<std::string>& exampleNames,
-                   const PrepareMessages& messages) {
-  for (std::size_t k = 0; k < examples.size(); ++k) {
-    requireCompatibleExample(rest, examples[k], exampleNames[k]);
-    const int flips = examples[k].triangles == rest.triangles
-                          ? 0
-                          : flippedQuadDiagonals(rest.triangles, examples[k].triangles);
-    if (flips > 0) {
-      say(messages.warning, exampleNames[k] + ": " + std::to_string(flips) +
-                                " quads are split along the other diagonal than in the rest (an "
-                                "exporter that triangulates each frame by its shape): the rest's "
-                                "triangles are used for every example");
-    }
-    if (examples[k].vertices == rest.vertices) {
-      say(messages.warning, exampleNames[k] + ": every vertex equals the rest's (" + restName +
-                                "): blending this example changes nothing");
-    }
-  }
-}
-
-// The model of the per-face tetrisation: the user's surface as it is (open
-// or not, seams and all, crossing itself, pinched or oriented any way: each
-// face's tet is its own), no interior.
-ModelData tetrisedModel(const SurfaceMesh& rest, const std::vector<SurfaceMesh>& examples,
-                        const std::string& restName, const std::vector<std::string>& exampleNames,
-                        const PrepareOptions& options, const PrepareMessages& messages) {
-  SurfaceValidationOptions validation;
-  validation.requireClosed = false;
-  validation.requireSolid = false;
-  validation.checkSelfIntersections = false;
-  requireValidRest(rest, restName, validation);
-  checkExamples(rest, examples, restName, exampleNames, messages);
-  if (options.strict) refuseSelfIntersecting(rest.triangles, examples, exampleNames);
-  advance(messages, 1);
-  ModelData model;
-  model.surfaceTriangles = rest.triangles;
-  model.surfaceVertexCount = static_cast<int>(rest.vertices.rows());
-  model.restSource = restName;
-  model.exampleSources = exampleNames;
-  std::vector<TetMesh> meshes = tetriseCompatible(rest, examples, exampleNames);
-  model.rest = std::move(meshes.front());
-  for (std::size_t k = 1; k < meshes.size(); ++k) model.examples.push_back(meshes[k].vertices);
-  advance(messages, exampleNames.size() + 1);
-  return model;
 }
 
 ModelData preparedAsIs(const SurfaceMesh& rest, const std::vector<SurfaceMesh>& examples,
@@ -273,175 +183,6 @@ ModelData withoutUnmeshableParts(const SurfaceMesh& rest, const std::vector<Surf
   return model;
 }
 
-// Per face of the input, 1 where its component (of the zipped surface)
-// cannot be meshed with an interior on its own (meshedRest refuses it: an
-// open sheet no fill closes, faces that cross too deeply, ...), else 0.
-std::vector<int> componentsWithoutInterior(const SeamWelding& welding, const std::string& restName,
-                                           const PrepareOptions& options, int& count) {
-  std::vector<int> faceComponent;
-  const std::vector<SurfaceComponent> components =
-      surfaceComponents(welding.surface, &faceComponent);
-  std::vector<int> refused(components.size(), 0);
-  count = 0;
-  for (std::size_t c = 0; c < components.size(); ++c) {
-    if (components.size() == 1) {  // the surface itself, which meshing refused
-      refused[c] = 1;
-      ++count;
-      break;
-    }
-    const SurfacePart part = surfacePart(welding.surface, faceComponent, static_cast<int>(c));
-    try {
-      meshedRest(part.surface, restName, options);
-    } catch (const InputError&) {
-      refused[c] = 1;
-      ++count;
-    }
-  }
-  std::vector<int> label(faceComponent.size());
-  for (std::size_t f = 0; f < label.size(); ++f) {
-    label[f] = faceComponent[f] < 0 ? 0 : refused[static_cast<std::size_t>(faceComponent[f])];
-  }
-  return label;
-}
-
-// The part of the input (rest and examples) whose faces `label` marks
-// `which`, as a surface of its own.
-struct InputPart {
-  SurfaceMesh rest;
-  std::vector<SurfaceMesh> examples;
-  std::vector<int> inputVertices;
-};
-
-InputPart inputPart(const SurfaceMesh& rest, const std::vector<SurfaceMesh>& examples,
-                    const std::vector<int>& label, int which) {
-  SurfacePart part = surfacePart(rest, label, which);
-  InputPart result{std::move(part.surface), {}, std::move(part.vertexRows)};
-  for (const SurfaceMesh& example : examples) {
-    Vertices positions(static_cast<Eigen::Index>(result.inputVertices.size()), 3);
-    for (std::size_t i = 0; i < result.inputVertices.size(); ++i) {
-      positions.row(static_cast<Eigen::Index>(i)) = example.vertices.row(result.inputVertices[i]);
-    }
-    result.examples.push_back({std::move(positions), result.rest.triangles});
-  }
-  return result;
-}
-
-// When meshing refused the rest (`refusal`) although each of its components
-// meshes on its own (components touching at a vertex, where their holes
-// meet): each component is prepared on its own (notes silenced, warnings
-// kept) and the models are joined. Rethrows `refusal` for one component.
-ModelData eachComponentOnItsOwn(const SurfaceMesh& rest, const std::vector<SurfaceMesh>& examples,
-                                const std::string& restName,
-                                const std::vector<std::string>& exampleNames,
-                                const PrepareOptions& options, const PrepareMessages& messages,
-                                const SeamWelding& welding, const InputError& refusal) {
-  std::vector<int> faceComponent;
-  const auto count = static_cast<int>(surfaceComponents(welding.surface, &faceComponent).size());
-  if (count < 2) throw refusal;
-  std::vector<ModelPart> parts;
-  Eigen::Index tets = 0;
-  for (int c = 0; c < count; ++c) {
-    const auto firstFace =
-        std::find(faceComponent.begin(), faceComponent.end(), c) - faceComponent.begin();
-    const std::string where = " (in its component of face " + std::to_string(firstFace) +
-                              ", prepared on its own: the numbers count that component's own "
-                              "faces, vertices and tets)";
-    PrepareMessages warningsOnly;
-    if (messages.warning) {
-      warningsOnly.warning = [&](const std::string& line) { messages.warning(line + where); };
-    }
-    InputPart part = inputPart(rest, examples, faceComponent, c);
-    ModelPart prepared{{}, std::move(part.inputVertices)};
-    try {
-      prepared.model =
-          prepareModel(part.rest, part.examples, restName, exampleNames, options, warningsOnly);
-    } catch (const InputError& error) {
-      throw InputError(std::string(error.what()) + where);
-    }
-    tets += prepared.model.rest.tets.rows();
-    parts.push_back(std::move(prepared));
-  }
-  say(messages.note, std::string(refusal.what()) + "; instead, each of its " +
-                         std::to_string(count) + " components is prepared on its own (" +
-                         roughCount(tets) + " tets in all)");
-  advance(messages, prepareStepCount(examples.size()));
-  return joinedModel(parts, rest.triangles, static_cast<int>(rest.vertices.rows()));
-}
-
-// When meshing refused the rest (`refusal`): the components that cannot be
-// meshed with an interior on their own get one tet per face (the
-// tetrisation), the others are prepared as usual, and the two models are
-// joined; when every component meshes on its own, eachComponentOnItsOwn.
-// Rethrows `refusal` with --no-fill-holes or --strict, or when the
-// tetrisation refuses the components that do not mesh.
-ModelData withComponentsTetrised(const SurfaceMesh& rest, const std::vector<SurfaceMesh>& examples,
-                                 const std::string& restName,
-                                 const std::vector<std::string>& exampleNames,
-                                 const PrepareOptions& options, const PrepareMessages& messages,
-                                 const SeamWelding& welding, const InputError& refusal) {
-  if (!options.fillHoles || options.strict) throw refusal;
-  int count = 0;
-  const std::vector<int> label = componentsWithoutInterior(welding, restName, options, count);
-  if (count == 0) {
-    return eachComponentOnItsOwn(rest, examples, restName, exampleNames, options, messages, welding,
-                                 refusal);
-  }
-  for (std::size_t k = 0; k < examples.size(); ++k) {
-    requireCompatibleExample(rest, examples[k], exampleNames[k]);
-  }
-  InputPart sheets = inputPart(rest, examples, label, 1);
-  try {
-    orientConsistently(sheets.rest);  // the tets only: the model keeps the input's faces
-  } catch (const InputError&) {
-  }
-  for (SurfaceMesh& example : sheets.examples) example.triangles = sheets.rest.triangles;
-  ModelPart tetrised{{}, sheets.inputVertices};
-  try {
-    tetrised.model = tetrisedModel(sheets.rest, sheets.examples, restName, exampleNames, options,
-                                   PrepareMessages{});
-  } catch (const InputError& error) {
-    throw InputError(
-        std::string(refusal.what()) + "; meshing " +
-        (count == 1 ? std::string("the component") : std::to_string(count) + " components") +
-        " that cannot be filled with tets face by face fails too: " + error.what());
-  }
-  if (sheets.rest.triangles.rows() == rest.triangles.rows()) {
-    const std::string reason = refusal.what();
-    say(messages.note,
-        reason + "; instead, each of its " + std::to_string(rest.triangles.rows()) +
-            " faces gets a tet of its own, as with --tetrise, and blends without an interior");
-  } else {
-    const auto firstFace = std::find(label.begin(), label.end(), 1) - label.begin();
-    say(messages.note, restName + ": " + std::to_string(count) +
-                           " of its components (first: the one of face " +
-                           std::to_string(firstFace) +
-                           ") cannot be filled with tets on their own (open sheets that no fill "
-                           "without new vertices closes, or faces that cross): each of their " +
-                           std::to_string(sheets.rest.triangles.rows()) +
-                           " faces gets a tet of its own, as with --tetrise, and blends without "
-                           "an interior");
-  }
-  const InputPart solids = inputPart(rest, examples, label, 0);
-  ModelPart meshedPart{{}, solids.inputVertices};
-  if (solids.rest.triangles.rows() == 0) {
-    meshedPart.model.examples.assign(examples.size(), Vertices(0, 3));
-    advance(messages, prepareStepCount(examples.size()));
-  } else {
-    try {
-      meshedPart.model =
-          prepareModel(solids.rest, solids.examples, restName, exampleNames, options, messages);
-    } catch (const InputError& error) {
-      throw InputError(std::string(error.what()) +
-                       " (vertex and face numbers count the surface without the components "
-                       "tetrised face by face)");
-    }
-  }
-  meshedPart.model.restSource = restName;
-  meshedPart.model.exampleSources = exampleNames;
-  return joinedModel({meshedPart, tetrised}, rest.triangles,
-                     static_cast<int>(rest.vertices.rows()));
-}
-
 // prepareModel of input without faces that repeat a vertex, zero-length
 // edges that can be merged, or vertices no face uses: the per-face
 // tetrisation, or TetGen with the seams zipped (the model keeps the input's
@@ -460,8 +201,8 @@ ModelData preparedAsIs(const SurfaceMesh& rest, const std::vector<SurfaceMesh>& 
   try {
     meshed = meshedZippedRest(welding, restName, options, candidates);
   } catch (const InputError& refusal) {
-    return withComponentsTetrised(rest, examples, restName, exampleNames, options, messages,
-                                  welding, refusal);
+    return preparedPartByPart(rest, examples, restName, exampleNames, options, messages, welding,
+                              refusal);
   }
   if (meshed.reorientedFaces > 0) {
     say(messages.warning, restName + ": " + std::to_string(meshed.reorientedFaces) +

@@ -1,0 +1,53 @@
+#pragma once
+// Private to prepare: the steps that the main flow (prepare_model.cpp) and
+// its fallbacks for parts of the rest (component_fallbacks.h) share: the
+// messages, the checks of the examples, and the per-face tetrisation's
+// model.
+
+#include <cstddef>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "tetblend/meshing/self_intersection.h"
+#include "tetblend/pipeline/model_file.h"
+#include "tetblend/pipeline/prepare_model.h"
+
+namespace tetblend::prepare_steps {
+
+/// Passes `line` to `sink` if there is one.
+void say(const std::function<void(const std::string&)>& sink, const std::string& line);
+
+/// Reports `steps` done to messages.step if there is one.
+void advance(const PrepareMessages& messages, std::size_t steps);
+
+/// "1.34 M" / "134 k" / "950": a tet count people read at a glance.
+std::string roughCount(long long n);
+
+/// Why an example's tets cannot be embedded, in words: its surface
+/// intersects itself (how many face pairs, the first), or the placement
+/// failed.
+std::string diagnosis(const SelfIntersections& found);
+
+/// --strict fails fast: an example whose surface intersects itself is
+/// refused before any meshing, since some of its tets can never be
+/// embedded. With `faceComponent` (components meshed each on its own), only
+/// faces of one component count.
+void refuseSelfIntersecting(const Triangles& triangles, const std::vector<SurfaceMesh>& examples,
+                            const std::vector<std::string>& exampleNames,
+                            const std::vector<int>& faceComponent = {});
+
+/// Refuses an example that is not the rest's surface; warns about one whose
+/// quads are split the other way, and about one equal to the rest.
+void checkExamples(const SurfaceMesh& rest, const std::vector<SurfaceMesh>& examples,
+                   const std::string& restName, const std::vector<std::string>& exampleNames,
+                   const PrepareMessages& messages);
+
+/// The model of the per-face tetrisation: the user's surface as it is (open
+/// or not, seams and all, crossing itself, pinched or oriented any way: each
+/// face's tet is its own), no interior.
+ModelData tetrisedModel(const SurfaceMesh& rest, const std::vector<SurfaceMesh>& examples,
+                        const std::string& restName, const std::vector<std::string>& exampleNames,
+                        const PrepareOptions& options, const PrepareMessages& messages);
+
+}  // namespace tetblend::prepare_steps
