@@ -39,7 +39,12 @@ void printProblems(const std::vector<SurfaceProblem>& problems) {
     std::printf("  validation: ok\n");
     return;
   }
-  std::printf("  validation: %zu problem(s)\n", problems.size());
+  std::printf(
+      "  validation: %zu problem(s) for one solid bounded by the file's faces as they are "
+      "(prepare works around most: it fills holes, zips seams, merges zero-length edges, meshes "
+      "overlapping parts on their own, gives parts no interior fits a tet per face, and says what "
+      "it did)\n",
+      problems.size());
   for (std::size_t i = 0; i < problems.size() && i < kShownProblems; ++i)
     std::printf("    %s\n", problems[i].message.c_str());
 }
