@@ -190,12 +190,13 @@ void checkVertexFans(const SurfaceMesh& mesh, Collector& out) {
   }
 }
 
-int checkComponents(const SurfaceMesh& mesh, Collector& out) {
+int checkComponents(const SurfaceMesh& mesh, const SurfaceValidationOptions& options,
+                    Collector& out) {
   const std::vector<SurfaceComponent> components = surfaceComponents(mesh);
   for (std::size_t c = 0; c < components.size(); ++c) {
     const SurfaceComponent& comp = components[c];
     if (!comp.closed || !comp.consistent) continue;
-    const bool cavity = comp.nestingDepth % 2 == 1;
+    const bool cavity = !options.componentsAreSolids && comp.nestingDepth % 2 == 1;
     if ((cavity ? -comp.signedVolume : comp.signedVolume) >= 0.0) continue;
     out.add(SurfaceProblemKind::kInwardOrientation, comp.firstFace, comp.signedVolume,
             "component " + std::to_string(c) + " (first face " + std::to_string(comp.firstFace) +
@@ -240,7 +241,7 @@ SurfaceValidation validateSurface(const SurfaceMesh& mesh, const std::string& so
   checkEdges(mesh, options, out);
   if (options.requireSolid) {
     checkVertexFans(mesh, out);
-    result.componentCount = checkComponents(mesh, out);
+    result.componentCount = checkComponents(mesh, options, out);
   } else {
     result.componentCount = static_cast<int>(surfaceComponents(mesh).size());
   }

@@ -112,10 +112,52 @@ int differingRows(const Triangles& a, const Triangles& b) {
   return count;
 }
 
+// Marks `meshed` for meshing each component on its own (`faceComponent`
+// from surfaceComponents) and reverses the components that face inwards:
+// each must bound its own solid.
+void meshComponentsApart(MeshedRest& meshed, const std::vector<SurfaceComponent>& components,
+                         std::vector<int> faceComponent) {
+  Triangles& triangles = meshed.surface.triangles;
+  for (Eigen::Index f = 0; f < triangles.rows(); ++f) {
+    const int c = faceComponent[static_cast<std::size_t>(f)];
+    if (c >= 0 && components[static_cast<std::size_t>(c)].signedVolume < 0.0) {
+      std::swap(triangles(f, 1), triangles(f, 2));
+    }
+  }
+  meshed.faceComponent = std::move(faceComponent);
+  meshed.componentCount = static_cast<int>(components.size());
+}
+
+// Closed components inside another (odd nesting depth) that the user's
+// faces turn outward, as a solid's (an eyeball in a head, teeth in a
+// mouth), where orientConsistently made them cavities: when there are such
+// and no nested component the user turned inward (a true cavity), every
+// component is meshed on its own, each turned outward. Returns how many.
+int markNestedSolids(MeshedRest& meshed, const Triangles& userTriangles) {
+  std::vector<int> faceComponent;
+  const std::vector<SurfaceComponent> components =
+      surfaceComponents(meshed.surface, &faceComponent);
+  std::vector<int> kept(components.size(), 0), reversed(components.size(), 0);
+  for (Eigen::Index f = 0; f < userTriangles.rows(); ++f) {
+    const int c = faceComponent[static_cast<std::size_t>(f)];
+    if (c < 0) continue;
+    const bool same = meshed.surface.triangles.row(f) == userTriangles.row(f);
+    ++(same ? kept : reversed)[static_cast<std::size_t>(c)];
+  }
+  int solids = 0;
+  for (std::size_t c = 0; c < components.size(); ++c) {
+    if (!components[c].closed || components[c].nestingDepth % 2 == 0) continue;
+    if (reversed[c] <= kept[c]) return 0;  // a true cavity: the components stay together
+    ++solids;
+  }
+  if (solids > 0) meshComponentsApart(meshed, components, std::move(faceComponent));
+  return solids;
+}
+
 // When faces of different closed components intersect (`found` lists every
-// intersecting pair), marks `meshed` for meshing each component on its own,
-// reverses the components that face inwards (each must bound its own
-// solid), and returns true.
+// intersecting pair), or the components are already meshed apart, counts
+// those pairs, marks `meshed` for meshing each component on its own, and
+// returns true.
 bool meshEachComponent(MeshedRest& meshed, const SelfIntersections& found) {
   std::vector<int> faceComponent;
   const std::vector<SurfaceComponent> components =
@@ -124,20 +166,14 @@ bool meshEachComponent(MeshedRest& meshed, const SelfIntersections& found) {
   for (const auto& [f, g] : found.pairs) {
     if (component(f) != component(g)) ++meshed.overlappingPairs;
   }
+  if (!meshed.faceComponent.empty()) return true;
   const bool closed = std::all_of(components.begin(), components.end(),
                                   [](const SurfaceComponent& c) { return c.closed; });
   if (meshed.overlappingPairs == 0 || !closed) {
     meshed.overlappingPairs = 0;
     return false;
   }
-  Triangles& triangles = meshed.surface.triangles;
-  for (Eigen::Index f = 0; f < triangles.rows(); ++f) {
-    if (components[static_cast<std::size_t>(component(static_cast<int>(f)))].signedVolume < 0.0) {
-      std::swap(triangles(f, 1), triangles(f, 2));
-    }
-  }
-  meshed.faceComponent = std::move(faceComponent);
-  meshed.componentCount = static_cast<int>(components.size());
+  meshComponentsApart(meshed, components, std::move(faceComponent));
   return true;
 }
 
@@ -210,19 +246,22 @@ MeshedRest meshedRest(const SurfaceMesh& rest, const std::string& restName,
   if (options.fillHoles) refuseTouchingRims(oriented, restName);
   meshed.surface = closedSurface(oriented, restName, options, meshed.filling);
   orientWherePossible(meshed.surface);
+  meshed.nestedSolids = markNestedSolids(meshed, rest.triangles);
   const Eigen::Index userFaces = rest.triangles.rows();
   meshed.reorientedFaces =
       differingRows(meshed.surface.triangles.topRows(userFaces), rest.triangles);
   meshed.flippedFaces = flipDegenerateFaces(meshed.surface, kDefaultZeroAreaRelTol).flipped;
 
-  const SurfaceValidation checked = validateSurface(meshed.surface, restName);
+  SurfaceValidationOptions validation;
+  validation.componentsAreSolids = !meshed.faceComponent.empty();
+  const SurfaceValidation checked = validateSurface(meshed.surface, restName, validation);
   if (checked.ok()) return meshed;
   const bool onlyIntersections = std::all_of(
       checked.problems.begin(), checked.problems.end(),
       [](const SurfaceProblem& p) { return p.kind == SurfaceProblemKind::kSelfIntersection; });
   if (!onlyIntersections) {
     refuseCutFill(listedPairs(checked), userFaces, restName);
-    requireValidRest(meshed.surface, restName);
+    requireValidRest(meshed.surface, restName, validation);
   }
 
   SelfIntersections found = findSelfIntersections(meshed.surface.vertices, meshed.surface.triangles,

@@ -39,6 +39,10 @@ struct MeshedRest {
   std::vector<int> faceComponent;
   int componentCount = 0;
   std::size_t overlappingPairs = 0;  ///< intersecting face pairs of different components
+  /// Closed components inside another that the user's faces turn outward,
+  /// as a solid's (an eyeball in a head), not inward, as a cavity's: then
+  /// every component is meshed on its own too.
+  int nestedSolids = 0;
 };
 
 /// The meshed rest of `rest` (read from `restName`). Faces that point inwards

@@ -209,6 +209,16 @@ ModelData preparedAsIs(const SurfaceMesh& rest, const std::vector<SurfaceMesh>& 
                               " faces point inwards or against their neighbours: they are meshed "
                               "reversed (the blended surfaces keep the input's faces)");
   }
+  if (meshed.nestedSolids > 0) {
+    const bool one = meshed.nestedSolids == 1;
+    say(messages.note, restName + ": " + std::to_string(meshed.nestedSolids) +
+                           (one ? " closed component inside another faces"
+                                : " closed components inside others face") +
+                           " outward, as a solid's surface does (a cavity's faces inward): each "
+                           "of its " +
+                           std::to_string(meshed.componentCount) +
+                           " components is meshed on its own, and their tets may overlap");
+  }
   if (meshed.overlappingPairs > 0) {
     say(messages.note, restName + ": its " + std::to_string(meshed.componentCount) +
                            " closed components intersect one another (" +

@@ -5,6 +5,8 @@
 // --strict accepts it (nothing is inexact) but still refuses a component
 // that intersects itself.
 
+#include <cmath>
+
 #include "posed_rest_fixture.h"
 #include "test_surfaces.h"
 #include "tetblend/core/constants.h"
@@ -97,6 +99,58 @@ TEST_F(OverlappingComponents, StrictAcceptsThemButNotAComponentThatIntersectsIts
   EXPECT_NE(refused.err.find("of one closed component intersect"), std::string::npos)
       << refused.err;
   EXPECT_EQ(listDir(dir_), before);
+}
+
+// Two eyes (radii 0.2 and 0.12) wholly inside a body (4 by 1 by 1), touching
+// nothing. Faced outward, as the user's solids, they are meshed on their
+// own (the tet volumes add up to the three solids'); faced inward, they are
+// cavities, left empty (the body's volume less theirs).
+class NestedComponents : public PosedRest {
+ protected:
+  SurfaceMesh headWithEyes(bool eyesFaceOutward) {
+    SurfaceMesh left = sphereAt({0.8, 0.12, 0}, {0.2, 0.2, 0.2});
+    SurfaceMesh right = sphereAt({0.8, -0.22, 0}, {0.12, 0.12, 0.12});
+    if (!eyesFaceOutward) {
+      left = testing_surfaces::reversed(left);
+      right = testing_surfaces::reversed(right);
+    }
+    const SurfaceMesh body = sphereAt({0, 0, 0}, {2.0, 0.5, 0.5});
+    bodyVolume_ = enclosedVolume(body);
+    eyeVolumes_ = std::abs(enclosedVolume(left)) + std::abs(enclosedVolume(right));
+    return testing_surfaces::join(testing_surfaces::join(body, left), right);
+  }
+  double tetVolume(const std::string& model) const {
+    const ModelData m = readModelFile(path(model));
+    double volume = 0.0;
+    for (Eigen::Index t = 0; t < m.rest.tets.rows(); ++t) {
+      volume += tetSignedVolume(m.rest.vertices, m.rest.tets.row(t));
+    }
+    return volume;
+  }
+  double bodyVolume_ = 0.0, eyeVolumes_ = 0.0;
+};
+
+TEST_F(NestedComponents, EyesFacingOutwardAreSolidsOfTheirOwn) {
+  writePoses(headWithEyes(true));
+  ASSERT_EQ(findSelfIntersections(rest_.vertices, rest_.triangles, 1).pairCount, 0u);
+  const RunResult r = tetblend(prepareArgs("eyes.tbm"), dir_);
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.err.find("rest.obj: 2 closed components inside others face outward"),
+            std::string::npos)
+      << r.err;
+  EXPECT_EQ(r.err.find("warning"), std::string::npos) << r.err;
+  const double expected = bodyVolume_ + eyeVolumes_;
+  EXPECT_NEAR(tetVolume("eyes.tbm"), expected, kVolumeRelTol * expected);
+  expectTheKeysBack("eyes.tbm");
+}
+
+TEST_F(NestedComponents, EyesFacingInwardAreCavities) {
+  writePoses(headWithEyes(false));
+  const RunResult r = tetblend(prepareArgs("cavities.tbm"), dir_);
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(r.err.find("inside others face outward"), std::string::npos) << r.err;
+  const double expected = bodyVolume_ - eyeVolumes_;
+  EXPECT_NEAR(tetVolume("cavities.tbm"), expected, kVolumeRelTol * expected);
 }
 
 }  // namespace

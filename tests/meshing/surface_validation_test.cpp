@@ -274,6 +274,19 @@ TEST(SurfaceValidation, CavityMustFaceIntoTheCavity) {
   EXPECT_EQ(bad.triangles, goodCavity.triangles);
 }
 
+// A cube inside a cube, both facing outward: a cavity facing the wrong way
+// for one solid, but right when every component is a solid of its own.
+TEST(SurfaceValidation, ComponentsAreSolidsAcceptsANestedSolidFacingOutward) {
+  const SurfaceMesh nested = join(cube(Eigen::Vector3d(-1, -1, -1), 3.0), cube());
+  expectProblem(validateSurface(nested, kFile), Kind::kInwardOrientation, 12, "first face");
+  SurfaceValidationOptions solids;
+  solids.componentsAreSolids = true;
+  EXPECT_TRUE(validateSurface(nested, kFile, solids).ok());
+  const SurfaceMesh cavity = join(cube(Eigen::Vector3d(-1, -1, -1), 3.0), reversed(cube()));
+  EXPECT_TRUE(validateSurface(cavity, kFile).ok());
+  expectProblem(validateSurface(cavity, kFile, solids), Kind::kInwardOrientation, 12, "first face");
+}
+
 TEST(SurfaceValidation, MoebiusStripCannotBeOriented) {
   // Four quads around a loop with a half twist: (a_i, b_i) -> (a_i+1, b_i+1),
   // last joined to the first swapped.

@@ -61,6 +61,10 @@ struct SurfaceValidationOptions {
   /// vertices, consistent and outward orientation. False for the per-face
   /// tetrisation, where each face's tet is its own.
   bool requireSolid = true;
+  /// Every closed component bounds a solid of its own (meshed on its own,
+  /// component_meshing.h): it must face outward even inside another
+  /// component, where it would otherwise be a cavity facing into itself.
+  bool componentsAreSolids = false;
   /// Run the exact self-intersection test (CGAL, O(F log F)).
   bool checkSelfIntersections = true;
   /// Relative area tolerance, see kDefaultZeroAreaRelTol.
