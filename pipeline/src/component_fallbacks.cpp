@@ -71,6 +71,40 @@ InputPart inputPart(const SurfaceMesh& rest, const std::vector<SurfaceMesh>& exa
   return result;
 }
 
+// Faces of `surface` the tetrisation can give no tet: zero area (no normal)
+// or the same three vertices as an earlier face; ascending.
+std::vector<int> facesWithoutATet(const SurfaceMesh& surface) {
+  SurfaceValidationOptions faces;
+  faces.requireClosed = false;
+  faces.requireSolid = false;
+  faces.checkSelfIntersections = false;
+  std::vector<int> result;
+  for (const SurfaceProblem& problem : validateSurface(surface, "", faces).problems) {
+    if (problem.kind == SurfaceProblemKind::kZeroAreaFace ||
+        problem.kind == SurfaceProblemKind::kDuplicateFace) {
+      result.push_back(static_cast<int>(problem.element));
+    }
+  }
+  std::sort(result.begin(), result.end());
+  result.erase(std::unique(result.begin(), result.end()), result.end());
+  return result;
+}
+
+// `rows` without the listed ones (ascending).
+Triangles withoutRows(const Triangles& rows, const std::vector<int>& dropped) {
+  Triangles kept(rows.rows() - static_cast<Eigen::Index>(dropped.size()), 3);
+  std::size_t next = 0;
+  Eigen::Index k = 0;
+  for (Eigen::Index r = 0; r < rows.rows(); ++r) {
+    if (next < dropped.size() && dropped[next] == r) {
+      ++next;
+    } else {
+      kept.row(k++) = rows.row(r);
+    }
+  }
+  return kept;
+}
+
 // When meshing refused the rest (`refusal`) although each of its components
 // meshes on its own (components touching at a vertex, where their holes
 // meet): each component is prepared on its own (notes silenced, warnings
@@ -135,32 +169,46 @@ ModelData preparedPartByPart(const SurfaceMesh& rest, const std::vector<SurfaceM
     orientConsistently(sheets.rest);  // the tets only: the model keeps the input's faces
   } catch (const InputError&) {
   }
+  const std::vector<int> flat = facesWithoutATet(sheets.rest);
+  sheets.rest.triangles = withoutRows(sheets.rest.triangles, flat);
   for (SurfaceMesh& example : sheets.examples) example.triangles = sheets.rest.triangles;
   ModelPart tetrised{{}, sheets.inputVertices};
   try {
-    tetrised.model = tetrisedModel(sheets.rest, sheets.examples, restName, exampleNames, options,
-                                   PrepareMessages{});
+    // A vertex only the flat faces used follows the examples linearly
+    // (meshable_input.h), as in any model of the tetrisation.
+    PrepareOptions perFace = options;
+    perFace.tetrise = true;
+    tetrised.model = prepareModel(sheets.rest, sheets.examples, restName, exampleNames, perFace,
+                                  PrepareMessages{});
   } catch (const InputError& error) {
     throw InputError(
         std::string(refusal.what()) + "; meshing " +
         (count == 1 ? std::string("the component") : std::to_string(count) + " components") +
         " that cannot be filled with tets face by face fails too: " + error.what());
   }
-  if (sheets.rest.triangles.rows() == rest.triangles.rows()) {
+  const std::string flatFaces =
+      flat.empty()       ? ""
+      : flat.size() == 1 ? std::string(" (1 face of zero area or repeating another gets none)")
+                         : " (" + std::to_string(flat.size()) +
+                               " faces of zero area or repeating another get none)";
+  if (label.end() == std::find(label.begin(), label.end(), 0)) {
     const std::string reason = refusal.what();
-    say(messages.note,
-        reason + "; instead, each of its " + std::to_string(rest.triangles.rows()) +
-            " faces gets a tet of its own, as with --tetrise, and blends without an interior");
+    const Eigen::Index faces = rest.triangles.rows();
+    say(messages.note, reason + "; instead, " +
+                           (faces == 1 ? std::string("its face gets")
+                                       : "each of its " + std::to_string(faces) + " faces gets") +
+                           " a tet of its own, as with --tetrise" + flatFaces +
+                           ", and blends without an interior");
   } else {
     const auto firstFace = std::find(label.begin(), label.end(), 1) - label.begin();
-    say(messages.note, restName + ": " + std::to_string(count) +
-                           " of its components (first: the one of face " +
-                           std::to_string(firstFace) +
-                           ") cannot be filled with tets on their own (open sheets that no fill "
-                           "without new vertices closes, or faces that cross): each of their " +
-                           std::to_string(sheets.rest.triangles.rows()) +
-                           " faces gets a tet of its own, as with --tetrise, and blends without "
-                           "an interior");
+    say(messages.note,
+        restName + ": " + std::to_string(count) + " of its components (first: the one of face " +
+            std::to_string(firstFace) +
+            ") cannot be filled with tets on their own (open sheets that no fill "
+            "without new vertices closes, or faces that cross): each of their " +
+            std::to_string(sheets.rest.triangles.rows() + static_cast<Eigen::Index>(flat.size())) +
+            " faces gets a tet of its own, as with --tetrise" + flatFaces +
+            ", and blends without an interior");
   }
   const InputPart solids = inputPart(rest, examples, label, 0);
   ModelPart meshedPart{{}, solids.inputVertices};

@@ -80,17 +80,28 @@ TEST(DegenerateFaces, ZeroLengthEdgesAreMergedForMeshing) {
   EXPECT_NE(prepared.err.find("4 faces repeat a vertex"), std::string::npos) << prepared.err;
   expectTheKeysBack(dir, rest, twist);
   // Vertex 40's copy leaves it in the example: that edge has length there,
-  // so it is not merged, and the rest's faces of zero area on it are
-  // refused with one line (also without --strict: a face of zero area has
-  // no tet of its own either).
+  // so it is not merged, and the rest's two faces of zero area on it keep
+  // the bar from being meshed with an interior. --strict refuses it with
+  // one line; without, every other face gets a tet of its own and the keys
+  // still come back.
   twist.vertices.bottomRows(1).array() += 0.01;
-  writeSurface((dir / "parted.obj").string(), twist);
-  const RunResult refused =
-      tetblend({"prepare", (dir / "rest.obj").string(), (dir / "parted.obj").string(), "-o",
-                (dir / "parted.tbm").string(), "--quiet"},
-               dir);
+  writeSurface((dir / "twist.obj").string(), twist);
+  const std::vector<std::string> args = {"prepare", (dir / "rest.obj").string(),
+                                         (dir / "twist.obj").string(), "-o",
+                                         (dir / "m.tbm").string()};
+  std::vector<std::string> strict = args;
+  strict.push_back("--strict");
+  strict.push_back("--quiet");
+  const RunResult refused = tetblend(strict, dir);
   expectOneLineError(refused);
   EXPECT_NE(refused.err.find("has area 0"), std::string::npos) << refused.err;
+  const RunResult parted = tetblend(args, dir);
+  ASSERT_EQ(parted.code, 0) << parted.err;
+  EXPECT_NE(parted.err.find("as with --tetrise (2 faces of zero area or repeating another get "
+                            "none)"),
+            std::string::npos)
+      << parted.err;
+  expectTheKeysBack(dir, rest, twist);
 }
 
 }  // namespace

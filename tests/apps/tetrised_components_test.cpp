@@ -128,6 +128,28 @@ TEST(TetrisedComponentsAttached, ASheetSharingAVertexUsesTheBodysRow) {
             kPosedRestInterpolationRelTol * boundingBoxDiagonal(twist.vertices));
 }
 
+// The sheet alone with a face of zero area on its boundary: the corners of
+// one boundary edge and a new vertex at its midpoint, which no other face
+// uses. That face gets no tet, its vertex follows the examples linearly,
+// and every input vertex comes back at the keys.
+TEST_F(TetrisedComponents, AFaceOfZeroAreaGetsNoTet) {
+  SurfaceMesh sheet = flatSheet(0.0);
+  const Eigen::Index m = sheet.vertices.rows();
+  sheet.vertices.conservativeResize(m + 1, 3);
+  sheet.vertices.row(m) = 0.5 * (sheet.vertices.row(0) + sheet.vertices.row(1));
+  sheet.triangles.conservativeResize(sheet.triangles.rows() + 1, 3);
+  sheet.triangles.bottomRows(1) << 1, 0, static_cast<int>(m);
+  writePoses(sheet);
+  const RunResult r = tetblend(prepareArgs("flat.tbm"), dir_);
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.err.find("each of its 73 faces gets a tet of its own, as with --tetrise (1 face of "
+                       "zero area or repeating another gets none)"),
+            std::string::npos)
+      << r.err;
+  EXPECT_EQ(readModelFile(path("flat.tbm")).rest.tets.rows(), 72);
+  expectTheKeysBack("flat.tbm");
+}
+
 TEST_F(TetrisedComponents, StrictRefusesTheSheet) {
   std::vector<std::string> args = prepareArgs("strict.tbm");
   args.push_back("--strict");
