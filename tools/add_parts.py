@@ -18,20 +18,7 @@ import argparse
 import math
 import random
 
-
-def read_off(path):
-    """Vertices and triangles of an ASCII OFF file (comments allowed)."""
-    with open(path) as f:
-        lines = [l.split("#", 1)[0].split() for l in f]
-    lines = [l for l in lines if l]
-    if not lines[0][0].endswith("OFF"):
-        raise SystemExit(f"{path}: not an OFF file")
-    header = lines[0][1:] or lines[1]
-    first = 1 if lines[0][1:] else 2
-    nv, nf = int(header[0]), int(header[1])
-    vertices = [tuple(map(float, l[:3])) for l in lines[first:first + nv]]
-    faces = [tuple(map(int, l[1:4])) for l in lines[first + nv:first + nv + nf]]
-    return vertices, faces
+from off_file import read_off_positions
 
 
 def icosphere(levels):
@@ -71,7 +58,7 @@ def main():
     parser.add_argument("--sheet", type=int, default=0)
     parser.add_argument("--seed", type=int, default=7)
     args = parser.parse_args()
-    vertices, faces = read_off(args.mesh)
+    vertices, faces = read_off_positions(args.mesh)
     lo = [min(v[a] for v in vertices) for a in range(3)]
     hi = [max(v[a] for v in vertices) for a in range(3)]
     diagonal = math.dist(lo, hi)

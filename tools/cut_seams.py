@@ -14,23 +14,7 @@ import collections
 import os
 import random
 
-
-def read_off(path):
-    """Vertex lines (as text) and triangles (polygons fanned) of an OFF file."""
-    with open(path) as f:
-        rows = [line.split("#", 1)[0].split() for line in f]
-    rows = [row for row in rows if row]
-    if not rows[0][0].endswith("OFF"):
-        raise SystemExit(f"{path}: not an OFF file")
-    header, first = (rows[0][1:], 1) if len(rows[0]) > 1 else (rows[1], 2)
-    vertex_count, face_count = int(header[0]), int(header[1])
-    vertices = [row[:3] for row in rows[first:first + vertex_count]]
-    triangles = []
-    for row in rows[first + vertex_count:first + vertex_count + face_count]:
-        corners = [int(x) for x in row[1:1 + int(row[0])]]
-        for j in range(1, len(corners) - 1):
-            triangles.append((corners[0], corners[j], corners[j + 1]))
-    return vertices, triangles
+from off_file import read_off
 
 
 def charts_of(triangles, count, rng):

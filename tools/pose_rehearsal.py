@@ -28,19 +28,7 @@ import subprocess
 import sys
 import time
 
-
-def read_off_vertices(path):
-    """Vertex positions of an ASCII OFF file (comments, C/N/ST prefixes and
-    per-vertex colours allowed: a vertex line's first three numbers)."""
-    with open(path) as f:
-        lines = [l.split("#", 1)[0].split() for l in f]
-    lines = [l for l in lines if l]
-    if not lines[0][0].endswith("OFF"):
-        raise SystemExit(f"{path}: not an OFF file")
-    header = lines[0][1:] or lines[1]
-    first = 1 if lines[0][1:] else 2
-    count = int(header[0])
-    return [tuple(map(float, l[:3])) for l in lines[first:first + count]]
+from off_file import read_off_positions
 
 
 def squared_distance(a, b):
@@ -81,7 +69,7 @@ def handle(name, centre, rotation):
 def write_frames(args, mesh, folder):
     """Writes the skinned frames of `mesh` into `folder`; returns their paths."""
     rng = random.Random(args.seed)
-    centroid, ends = farthest_points(read_off_vertices(mesh), args.handles)
+    centroid, ends = farthest_points(read_off_positions(mesh)[0], args.handles)
     axes = []
     for _ in ends:
         v = [rng.gauss(0, 1) for _ in range(3)]
