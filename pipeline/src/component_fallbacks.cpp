@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <utility>
 
+#include "meshable_input.h"
 #include "meshed_rest.h"
 #include "model_join.h"
 #include "prepare_steps.h"
@@ -90,21 +91,6 @@ std::vector<int> facesWithoutATet(const SurfaceMesh& surface) {
   return result;
 }
 
-// `rows` without the listed ones (ascending).
-Triangles withoutRows(const Triangles& rows, const std::vector<int>& dropped) {
-  Triangles kept(rows.rows() - static_cast<Eigen::Index>(dropped.size()), 3);
-  std::size_t next = 0;
-  Eigen::Index k = 0;
-  for (Eigen::Index r = 0; r < rows.rows(); ++r) {
-    if (next < dropped.size() && dropped[next] == r) {
-      ++next;
-    } else {
-      kept.row(k++) = rows.row(r);
-    }
-  }
-  return kept;
-}
-
 // When meshing refused the rest (`refusal`) although each of its components
 // meshes on its own (components touching at a vertex, where their holes
 // meet): each component is prepared on its own (notes silenced, warnings
@@ -170,7 +156,7 @@ ModelData preparedPartByPart(const SurfaceMesh& rest, const std::vector<SurfaceM
   } catch (const InputError&) {
   }
   const std::vector<int> flat = facesWithoutATet(sheets.rest);
-  sheets.rest.triangles = withoutRows(sheets.rest.triangles, flat);
+  sheets.rest = withoutFaces(sheets.rest, flat);
   for (SurfaceMesh& example : sheets.examples) example.triangles = sheets.rest.triangles;
   ModelPart tetrised{{}, sheets.inputVertices};
   try {

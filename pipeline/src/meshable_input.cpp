@@ -12,20 +12,6 @@ bool repeatsAVertex(const Triangles& triangles, Eigen::Index f) {
          triangles(f, 0) == triangles(f, 2);
 }
 
-SurfaceMesh withoutFaces(const SurfaceMesh& mesh, const std::vector<int>& faces) {
-  SurfaceMesh kept{mesh.vertices, Triangles(mesh.triangles.rows() - faces.size(), 3)};
-  std::size_t next = 0;
-  Eigen::Index row = 0;
-  for (Eigen::Index f = 0; f < mesh.triangles.rows(); ++f) {
-    if (next < faces.size() && faces[next] == f) {
-      ++next;
-      continue;
-    }
-    kept.triangles.row(row++) = mesh.triangles.row(f);
-  }
-  return kept;
-}
-
 // Whether vertices a and b are at one position in every one of `surfaces`.
 bool coincide(const std::vector<const Vertices*>& surfaces, int a, int b) {
   return std::all_of(surfaces.begin(), surfaces.end(),
@@ -76,6 +62,20 @@ bool hasZeroLengthEdge(const SurfaceMesh& rest) {
 }
 
 }  // namespace
+
+SurfaceMesh withoutFaces(const SurfaceMesh& mesh, const std::vector<int>& faces) {
+  SurfaceMesh kept{mesh.vertices, Triangles(mesh.triangles.rows() - faces.size(), 3)};
+  std::size_t next = 0;
+  Eigen::Index row = 0;
+  for (Eigen::Index f = 0; f < mesh.triangles.rows(); ++f) {
+    if (next < faces.size() && faces[next] == f) {
+      ++next;
+      continue;
+    }
+    kept.triangles.row(row++) = mesh.triangles.row(f);
+  }
+  return kept;
+}
 
 bool hasUnmeshableParts(const SurfaceMesh& rest) {
   for (Eigen::Index f = 0; f < rest.triangles.rows(); ++f) {

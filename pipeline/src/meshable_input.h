@@ -40,6 +40,9 @@ struct MeshableInput {
   std::vector<SurfaceMesh> examples;  ///< each example without the same
 };
 
+/// `mesh` without the listed faces (ascending), its vertices all kept.
+SurfaceMesh withoutFaces(const SurfaceMesh& mesh, const std::vector<int>& faces);
+
 /// True if `rest` (face indices in range) has a face that repeats a vertex,
 /// an edge of zero length or a vertex that no face uses.
 bool hasUnmeshableParts(const SurfaceMesh& rest);

@@ -159,14 +159,20 @@ int markNestedSolids(MeshedRest& meshed, const Triangles& userTriangles) {
 // those pairs, marks `meshed` for meshing each component on its own, and
 // returns true.
 bool meshEachComponent(MeshedRest& meshed, const SelfIntersections& found) {
+  const auto countOverlaps = [&](const std::vector<int>& faceComponent) {
+    for (const auto& [f, g] : found.pairs) {
+      if (faceComponent[static_cast<std::size_t>(f)] != faceComponent[static_cast<std::size_t>(g)])
+        ++meshed.overlappingPairs;
+    }
+  };
+  if (!meshed.faceComponent.empty()) {
+    countOverlaps(meshed.faceComponent);
+    return true;
+  }
   std::vector<int> faceComponent;
   const std::vector<SurfaceComponent> components =
       surfaceComponents(meshed.surface, &faceComponent);
-  const auto component = [&](int f) { return faceComponent[static_cast<std::size_t>(f)]; };
-  for (const auto& [f, g] : found.pairs) {
-    if (component(f) != component(g)) ++meshed.overlappingPairs;
-  }
-  if (!meshed.faceComponent.empty()) return true;
+  countOverlaps(faceComponent);
   const bool closed = std::all_of(components.begin(), components.end(),
                                   [](const SurfaceComponent& c) { return c.closed; });
   if (meshed.overlappingPairs == 0 || !closed) {

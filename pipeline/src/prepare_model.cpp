@@ -235,10 +235,13 @@ ModelData preparedAsIs(const SurfaceMesh& rest, const std::vector<SurfaceMesh>& 
   model.surfaceTriangles = rest.triangles;
   model.restSource = restName;
   model.exampleSources = exampleNames;
-  // The examples on the zipped surface's vertices.
+  // The examples on the zipped surface's vertices (weldedPositions again
+  // only to name an example that opens a seam).
   std::vector<SurfaceMesh> zipped;
   for (std::size_t k = 0; k < examples.size(); ++k) {
-    zipped.push_back({weldedPositions(welding, examples[k].vertices, exampleNames[k]),
+    zipped.push_back({candidates[k].rows() > 0
+                          ? candidates[k]
+                          : weldedPositions(welding, examples[k].vertices, exampleNames[k]),
                       welding.surface.triangles});
   }
   if (welding.mergedVertices > 0) {
