@@ -49,6 +49,44 @@ SeamWelding unchanged(const SurfaceMesh& surface) {
   return welding;
 }
 
+bool indicesInRange(const SurfaceMesh& surface) {
+  return surface.triangles.size() == 0 || (surface.triangles.minCoeff() >= 0 &&
+                                           surface.triangles.maxCoeff() < surface.vertices.rows());
+}
+
+// `surface` with each group of `groups` merged into its smallest vertex, or
+// as it is (nothing merged) when a face would collapse.
+SeamWelding merged(const SurfaceMesh& surface, detail::UnionFind& groups) {
+  SeamWelding welding;
+  welding.rowOf.resize(static_cast<std::size_t>(surface.vertices.rows()));
+  std::vector<int> kept;
+  for (std::size_t v = 0; v < welding.rowOf.size(); ++v) {
+    const std::size_t root = groups.find(v);
+    if (root == v) {
+      welding.rowOf[v] = static_cast<int>(kept.size());
+      kept.push_back(static_cast<int>(v));
+    } else {
+      welding.rowOf[v] = welding.rowOf[root];  // root < v: already numbered
+    }
+  }
+  welding.mergedVertices = static_cast<int>(welding.rowOf.size() - kept.size());
+  if (welding.mergedVertices == 0) return unchanged(surface);
+  welding.surface.vertices.resize(static_cast<Eigen::Index>(kept.size()), 3);
+  for (std::size_t r = 0; r < kept.size(); ++r) {
+    welding.surface.vertices.row(static_cast<Eigen::Index>(r)) = surface.vertices.row(kept[r]);
+  }
+  welding.surface.triangles.resize(surface.triangles.rows(), 3);
+  for (Eigen::Index f = 0; f < surface.triangles.rows(); ++f) {
+    for (int c = 0; c < 3; ++c) {
+      welding.surface.triangles(f, c) =
+          welding.rowOf[static_cast<std::size_t>(surface.triangles(f, c))];
+    }
+    const auto t = welding.surface.triangles.row(f);
+    if (t(0) == t(1) || t(1) == t(2) || t(0) == t(2)) return unchanged(surface);
+  }
+  return welding;
+}
+
 }  // namespace
 
 std::vector<int> positionIds(const Vertices& vertices) {
@@ -68,10 +106,7 @@ std::vector<int> positionIds(const Vertices& vertices) {
 }
 
 SeamWelding weldSeams(const SurfaceMesh& surface) {
-  const bool indicesInRange =
-      surface.triangles.size() == 0 ||
-      (surface.triangles.minCoeff() >= 0 && surface.triangles.maxCoeff() < surface.vertices.rows());
-  if (!surface.vertices.allFinite() || !indicesInRange) return unchanged(surface);
+  if (!surface.vertices.allFinite() || !indicesInRange(surface)) return unchanged(surface);
   const std::vector<int> id = positionIds(surface.vertices);
   const std::vector<BoundaryEdge> edges = boundaryEdges(surface.triangles, id);
   detail::UnionFind groups(static_cast<std::size_t>(surface.vertices.rows()));
@@ -93,33 +128,53 @@ SeamWelding weldSeams(const SurfaceMesh& surface) {
   }
   if (seamEdges == 0) return unchanged(surface);
 
-  SeamWelding welding;
-  welding.seamEdges = seamEdges;
-  welding.rowOf.resize(static_cast<std::size_t>(surface.vertices.rows()));
-  std::vector<int> kept;
-  for (std::size_t v = 0; v < welding.rowOf.size(); ++v) {
-    const std::size_t root = groups.find(v);
-    if (root == v) {
-      welding.rowOf[v] = static_cast<int>(kept.size());
-      kept.push_back(static_cast<int>(v));
-    } else {
-      welding.rowOf[v] = welding.rowOf[root];  // root < v: already numbered
+  SeamWelding welding = merged(surface, groups);
+  if (welding.mergedVertices > 0) welding.seamEdges = seamEdges;
+  return welding;
+}
+
+SeamWelding withTouchingRimsJoined(SeamWelding welding, const std::vector<SurfaceMesh>& examples) {
+  const SurfaceMesh& surface = welding.surface;
+  if (!indicesInRange(surface) || !surface.vertices.allFinite()) return welding;
+  std::vector<char> onRim(static_cast<std::size_t>(surface.vertices.rows()), 0);
+  const detail::HalfEdgeTable table =
+      detail::buildHalfEdgeTable(surface.triangles, std::vector<char>(surface.triangles.rows(), 0));
+  for (const auto& [begin, end] : table.edges) {
+    if (end - begin != 1) continue;
+    onRim[static_cast<std::size_t>(table.halfEdges[begin].lo)] = 1;
+    onRim[static_cast<std::size_t>(table.halfEdges[begin].hi)] = 1;
+  }
+  // An input vertex of each row, to read the examples' positions there.
+  std::vector<int> inputOf(onRim.size(), -1);
+  for (std::size_t v = welding.rowOf.size(); v-- > 0;) {
+    inputOf[static_cast<std::size_t>(welding.rowOf[v])] = static_cast<int>(v);
+  }
+  const auto together = [&](int a, int b) {
+    return std::all_of(examples.begin(), examples.end(), [&](const SurfaceMesh& example) {
+      const Vertices& at = example.vertices;
+      return at.rows() != static_cast<Eigen::Index>(welding.rowOf.size()) ||
+             at.row(inputOf[static_cast<std::size_t>(a)]) ==
+                 at.row(inputOf[static_cast<std::size_t>(b)]);
+    });
+  };
+  const std::vector<int> id = positionIds(surface.vertices);
+  std::vector<int> firstAt(onRim.size(), -1);  // per position, its first rim vertex
+  detail::UnionFind groups(onRim.size());
+  for (std::size_t v = 0; v < onRim.size(); ++v) {
+    if (!onRim[v]) continue;
+    int& first = firstAt[static_cast<std::size_t>(id[v])];
+    if (first < 0) {
+      first = static_cast<int>(v);
+    } else if (together(first, static_cast<int>(v))) {
+      groups.unite(static_cast<std::size_t>(first), v);
     }
   }
-  welding.mergedVertices = static_cast<int>(welding.rowOf.size() - kept.size());
-  welding.surface.vertices.resize(static_cast<Eigen::Index>(kept.size()), 3);
-  for (std::size_t r = 0; r < kept.size(); ++r) {
-    welding.surface.vertices.row(static_cast<Eigen::Index>(r)) = surface.vertices.row(kept[r]);
-  }
-  welding.surface.triangles.resize(surface.triangles.rows(), 3);
-  for (Eigen::Index f = 0; f < surface.triangles.rows(); ++f) {
-    for (int c = 0; c < 3; ++c) {
-      welding.surface.triangles(f, c) =
-          welding.rowOf[static_cast<std::size_t>(surface.triangles(f, c))];
-    }
-    const auto t = welding.surface.triangles.row(f);
-    if (t(0) == t(1) || t(1) == t(2) || t(0) == t(2)) return unchanged(surface);
-  }
+  const SeamWelding rims = merged(surface, groups);
+  if (rims.mergedVertices == 0) return welding;
+  for (int& row : welding.rowOf) row = rims.rowOf[static_cast<std::size_t>(row)];
+  welding.surface = rims.surface;
+  welding.mergedVertices += rims.mergedVertices;
+  welding.rimVertices = rims.mergedVertices;
   return welding;
 }
 

@@ -29,9 +29,7 @@ std::string numberText(double x) {
 
 }  // namespace detail
 
-namespace {
-
-void throwFirst(const std::vector<SurfaceProblem>& problems) {
+void requireNoProblems(const std::vector<SurfaceProblem>& problems) {
   if (problems.empty()) return;
   std::string message = problems.front().message;
   if (problems.size() > 1) {
@@ -40,8 +38,6 @@ void throwFirst(const std::vector<SurfaceProblem>& problems) {
   }
   throw InputError(message);
 }
-
-}  // namespace
 
 const char* problemKindName(SurfaceProblemKind kind) {
   switch (kind) {
@@ -194,12 +190,12 @@ int flippedQuadDiagonals(const Triangles& rest, const Triangles& example) {
 
 void requireValidRest(const SurfaceMesh& mesh, const std::string& sourceName,
                       const SurfaceValidationOptions& options) {
-  throwFirst(validateSurface(mesh, sourceName, options).problems);
+  requireNoProblems(validateSurface(mesh, sourceName, options).problems);
 }
 
 void requireCompatibleExample(const SurfaceMesh& rest, const SurfaceMesh& example,
                               const std::string& exampleName) {
-  throwFirst(validateExample(rest, example, exampleName));
+  requireNoProblems(validateExample(rest, example, exampleName));
 }
 
 std::vector<int> unreferencedVertices(const SurfaceMesh& mesh) {

@@ -57,9 +57,10 @@ std::pair<int, int> coincidentVertices(const Vertices& vertices) {
 }
 
 // An open surface with two vertices at one position after its seams were
-// zipped (seam_welding.h): holes whose rims touch there, or more than two
-// sheets along one edge. No fill without new vertices closes them, and
-// merging the two would pinch the surface (CGAL's elephant-with-holes).
+// zipped and its touching rims joined (seam_welding.h): rims that touch
+// there but part in an example, a rim that touches a sheet's inside, or
+// more than two sheets along one edge. No fill without new vertices closes
+// them, and merging the two would pinch the surface.
 void refuseTouchingRims(const SurfaceMesh& surface, const std::string& restName) {
   if (!surface.vertices.allFinite()) return;  // validateSurface names the value
   const auto [a, b] = coincidentVertices(surface.vertices);
@@ -72,10 +73,10 @@ void refuseTouchingRims(const SurfaceMesh& surface, const std::string& restName)
       [](const SurfaceProblem& p) { return p.kind == SurfaceProblemKind::kBoundaryEdge; });
   if (!open) return;
   throw InputError(restName + ": vertices " + std::to_string(a) + " and " + std::to_string(b) +
-                   " are at the same position on the rims of its holes, which touch there (not "
-                   "a seam: no two boundary edges join them to copies of their neighbours), so "
-                   "no fill without new vertices closes them: close the holes yourself (e.g. "
-                   "MeshLab's Close Holes), or use the per-face tetrisation (--tetrise)");
+                   " are at the same position where the rims of its holes touch, and stay apart "
+                   "(they part in an example, or one is not on a rim), so no fill without new "
+                   "vertices closes the holes: close them yourself (e.g. MeshLab's Close "
+                   "Holes), or use the per-face tetrisation (--tetrise)");
 }
 
 // A triangle filling a hole that intersects the surface: the fill is fixed by

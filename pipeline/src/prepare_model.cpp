@@ -113,7 +113,8 @@ MeshedRest meshedZippedRest(const SeamWelding& welding, const std::string& restN
     if (welding.mergedVertices == 0) throw;
     throw InputError(std::string(error.what()) + " (vertex numbers count the surface after " +
                      std::to_string(welding.mergedVertices) +
-                     " copies of seam vertices were merged)");
+                     " vertices at the position of another were merged: seams zipped, touching "
+                     "rims joined)");
   }
 }
 
@@ -195,7 +196,7 @@ ModelData preparedAsIs(const SurfaceMesh& rest, const std::vector<SurfaceMesh>& 
   }
   // TetGen meshes the rest with its seams zipped; the model keeps the
   // input's vertices and faces.
-  const SeamWelding welding = weldSeams(rest);
+  const SeamWelding welding = withTouchingRimsJoined(weldSeams(rest), examples);
   const std::vector<Vertices> candidates = zippedPositions(rest, welding, examples, exampleNames);
   MeshedRest meshed;
   try {
@@ -244,12 +245,18 @@ ModelData preparedAsIs(const SurfaceMesh& rest, const std::vector<SurfaceMesh>& 
                           : weldedPositions(welding, examples[k].vertices, exampleNames[k]),
                       welding.surface.triangles});
   }
-  if (welding.mergedVertices > 0) {
-    say(messages.note, restName + ": " + std::to_string(welding.mergedVertices) +
-                           " vertices split along texture or normal seams are merged with their " +
-                           "copies for meshing (" + std::to_string(welding.seamEdges) +
-                           " seam edges zipped); the blended surfaces keep the input's vertices " +
-                           "and faces");
+  if (welding.seamEdges > 0) {
+    say(messages.note,
+        restName + ": " + std::to_string(welding.mergedVertices - welding.rimVertices) +
+            " vertices split along texture or normal seams are merged with their " +
+            "copies for meshing (" + std::to_string(welding.seamEdges) +
+            " seam edges zipped); the blended surfaces keep the input's vertices " + "and faces");
+  }
+  if (welding.rimVertices > 0) {
+    say(messages.note, restName + ": " + std::to_string(welding.rimVertices) +
+                           " vertices on the rims of its holes at the same position as another "
+                           "(holes that touch there) are merged for meshing, and the holes filled "
+                           "around them; the blended surfaces keep the input's vertices and faces");
   }
   if (options.strict) {
     refuseSelfIntersecting(meshed.surface.triangles, zipped, exampleNames, meshed.faceComponent);

@@ -1,9 +1,10 @@
 // End to end: an open rest surface (a tube open at both ends) is prepared by
 // closing its holes with triangles between its boundary vertices; blends keep
 // the user's faces and reproduce the rest and every example at the surface.
-// --no-fill-holes refuses it as before; a texture seam is zipped; touching
-// holes, and a fill through the surface, are one clear error each; an
-// example whose fill folds through the tube loses tets to the exclusion.
+// --no-fill-holes refuses it as before; a texture seam is zipped; holes
+// that touch are filled around the vertex they share; a fill through the
+// surface falls back to a tet per face; an example whose fill folds through
+// the tube loses tets to the exclusion.
 
 #include <Eigen/Geometry>
 
@@ -89,11 +90,14 @@ TEST_F(OpenRest, NoFillHolesRefusesAsBefore) {
   EXPECT_NE(r.err.find("let prepare fill the holes"), std::string::npos) << r.err;
 }
 
-TEST_F(OpenRest, TouchingHolesFallBackToATetPerFace) {
+TEST_F(OpenRest, TouchingHolesAreFilledAroundTheirSharedVertex) {
   // Drop the two triangles of quad 3 of band 0 and of quad 4 of band 1: the
-  // bottom hole and the new one then share vertex (ring 1, 4). No fill
-  // closes them: each face gets a tet of its own (a pinched vertex is no
-  // obstacle to that), with the reason in the note; --strict refuses it.
+  // bottom hole and the new one then touch at vertex v = (ring 1, 4), where
+  // two fans of faces meet. Each hole's fill takes its own corner at v, so
+  // the tube keeps its interior and the keys are exact, with --strict too
+  // (nothing is inexact). Written twice: v shared, and v written as two
+  // vertices at one position (one per fan, as a scan's touching rims are),
+  // which are joined for meshing and share one row in the model.
   SurfaceMesh touching{tube_.mesh.vertices, Triangles(tube_.mesh.triangles.rows() - 4, 3)};
   int kept = 0;
   for (int f = 0; f < tube_.mesh.triangles.rows(); ++f) {
@@ -101,28 +105,60 @@ TEST_F(OpenRest, TouchingHolesFallBackToATetPerFace) {
     if (quad == 3 || quad == kSegments + 4) continue;
     touching.triangles.row(kept++) = tube_.mesh.triangles.row(f);
   }
-  const SurfaceMesh twist{readSurface(path("twist.obj")).vertices, touching.triangles};
-  writeSurface(path("touching.obj"), touching);
-  writeSurface(path("touching_twist.obj"), twist);
-  const std::string reason =
-      "touching.obj: vertex " + std::to_string(tube_.vertex(1, 4)) + " lies on 4 boundary edges";
-  const fs::path model = dir_ / "touching.tbm";
-  const RunResult r = tetblend(
-      {"prepare", path("touching.obj"), path("touching_twist.obj"), "-o", model.string()}, dir_);
-  ASSERT_EQ(r.code, 0) << r.err;
-  EXPECT_NE(r.err.find(reason), std::string::npos) << r.err;
-  EXPECT_NE(r.err.find("instead, each of its 252 faces gets a tet of its own"), std::string::npos)
-      << r.err;
-  const fs::path out = dir_ / "touching_one.vtp";
-  ASSERT_EQ(tetblend({"blend", model.string(), "-w", "1", "-o", out.string()}, dir_).code, 0);
-  EXPECT_LT(maxDistance(pointsOf(readVtp(out)), twist.vertices),
-            kInterpolationRelTol * boundingBoxDiagonal(twist.vertices));
-
-  const RunResult refused = tetblend({"prepare", path("touching.obj"), path("touching_twist.obj"),
-                                      "-o", (dir_ / "strict.tbm").string(), "--strict"},
-                                     dir_);
-  expectOneLineError(refused);
-  EXPECT_NE(refused.err.find(reason), std::string::npos) << refused.err;
+  const int v = tube_.vertex(1, 4);
+  SurfaceMesh copied = touching;
+  const auto copy = static_cast<int>(copied.vertices.rows());
+  copied.vertices.conservativeResize(copy + 1, 3);
+  copied.vertices.row(copy) = copied.vertices.row(v);
+  for (Eigen::Index f = 0; f < copied.triangles.rows(); ++f) {
+    const auto face = copied.triangles.row(f);
+    const bool inQuad3OfBand1 =
+        (face.array() == tube_.vertex(2, 3)).any() || (face.array() == tube_.vertex(2, 4)).any();
+    for (int c = 0; c < 3; ++c) {
+      if (face(c) == v && inQuad3OfBand1) {
+        copied.triangles(f, c) = copy;
+      }
+    }
+  }
+  const Vertices twisted = readSurface(path("twist.obj")).vertices;
+  for (const auto& [name, rest] : {std::pair{"shared", &touching}, std::pair{"copied", &copied}}) {
+    SCOPED_TRACE(name);
+    Vertices twist = twisted;
+    twist.conservativeResize(rest->vertices.rows(), 3);
+    if (rest == &copied) twist.row(copy) = twist.row(v);
+    writeSurface(path(std::string(name) + ".obj"), *rest);
+    writeSurface(path(std::string(name) + "_twist.obj"), SurfaceMesh{twist, rest->triangles});
+    for (const bool strict : {false, true}) {
+      const fs::path model = dir_ / (std::string(name) + (strict ? "_strict" : "") + ".tbm");
+      std::vector<std::string> args{"prepare", path(std::string(name) + ".obj"),
+                                    path(std::string(name) + "_twist.obj"), "-o", model.string()};
+      if (strict) args.push_back("--strict");
+      const RunResult r = tetblend(args, dir_);
+      ASSERT_EQ(r.code, 0) << r.err;
+      // The bottom hole with its notch at quad 3, quad 4 of band 1, the top.
+      EXPECT_NE(r.err.find("filled 3 holes"), std::string::npos) << r.err;
+      EXPECT_EQ(r.err.find("a tet of its own"), std::string::npos) << r.err;
+      EXPECT_EQ(r.err.find("on its own"), std::string::npos) << r.err;
+      const bool joined =
+          r.err.find("1 vertices on the rims of its holes at the same position as another") !=
+          std::string::npos;
+      EXPECT_EQ(joined, rest == &copied) << r.err;
+      const ModelData m = readModelFile(model.string());
+      EXPECT_GT(m.rest.vertices.rows(), tube_.mesh.vertices.rows()) << "no interior vertex";
+      EXPECT_TRUE(m.excludedTets.empty());
+      if (rest == &copied) {
+        ASSERT_EQ(m.inputVertexRows.size(), static_cast<std::size_t>(copy + 1));
+        EXPECT_EQ(m.inputVertexRows[static_cast<std::size_t>(copy)],
+                  m.inputVertexRows[static_cast<std::size_t>(v)]);
+      }
+      for (const auto& [w, expected] : {std::pair{"0", &rest->vertices}, std::pair{"1", &twist}}) {
+        const fs::path out = dir_ / (std::string(name) + w + ".vtp");
+        ASSERT_EQ(tetblend({"blend", model.string(), "-w", w, "-o", out.string()}, dir_).code, 0);
+        EXPECT_LT(maxDistance(pointsOf(readVtp(out)), *expected),
+                  kInterpolationRelTol * boundingBoxDiagonal(*expected));
+      }
+    }
+  }
 }
 
 TEST_F(OpenRest, TubesTouchingAtARimVertexArePreparedEachOnItsOwn) {
@@ -304,14 +340,13 @@ TEST(OpenRestSeam, ASeamIsZippedAndTheBlendsKeepTheCopies) {
   }
 }
 
-// Two square sheets touching at a corner, each with its own copy of it: not
-// a seam (no edge joins the copies' neighbours), so nothing is zipped, and
-// merging the copies would pinch the surface. One line names the vertices
-// and the remedies that work.
-TEST(OpenRestSeam, HolesTouchingAtACopiedVertexAreNamed) {
-  // Two unit squares touching at one corner, written twice (vertices 2 and
-  // 4): no fill closes them, so each face gets a tet of its own, and
-  // --strict refuses them with the touching vertices named.
+// Two square sheets touching at a corner, each with its own copy of it
+// (vertices 2 and 4), which part in the example: not a seam (no edge joins
+// the copies' neighbours), and not rims to join (they part), so nothing is
+// merged and no fill closes the sheets. Each face gets a tet of its own,
+// and --strict refuses them with one line naming the vertices and the
+// remedies that work.
+TEST(OpenRestSeam, TouchingRimsThatPartAreNamed) {
   const fs::path dir = scratchDir();
   SurfaceMesh sheets;
   sheets.vertices.resize(8, 3);
@@ -319,21 +354,24 @@ TEST(OpenRestSeam, HolesTouchingAtACopiedVertexAreNamed) {
       1, 1, 0, 2, 1, 0, 2, 2, 0, 1, 2, 0;
   sheets.triangles.resize(4, 3);
   sheets.triangles << 0, 1, 2, 0, 2, 3, 4, 5, 6, 4, 6, 7;
+  SurfaceMesh apart = sheets;
+  apart.vertices.bottomRows(4).col(0).array() += 0.5;
   writeSurface((dir / "sheets.obj").string(), sheets);
+  writeSurface((dir / "apart.obj").string(), apart);
   const RunResult r = tetblend({"prepare", (dir / "sheets.obj").string(),
-                                (dir / "sheets.obj").string(), "-o", (dir / "s.tbm").string()},
+                                (dir / "apart.obj").string(), "-o", (dir / "s.tbm").string()},
                                dir);
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.err.find("instead, each of its 4 faces gets a tet of its own"), std::string::npos)
       << r.err;
   const std::vector<std::string> before = listDir(dir);
   const RunResult refused =
-      tetblend({"prepare", (dir / "sheets.obj").string(), (dir / "sheets.obj").string(), "-o",
+      tetblend({"prepare", (dir / "sheets.obj").string(), (dir / "apart.obj").string(), "-o",
                 (dir / "strict.tbm").string(), "--strict"},
                dir);
   expectOneLineError(refused);
-  EXPECT_NE(refused.err.find("sheets.obj: vertices 2 and 4 are at the same position on the rims "
-                             "of its holes"),
+  EXPECT_NE(refused.err.find("sheets.obj: vertices 2 and 4 are at the same position where the "
+                             "rims of its holes touch"),
             std::string::npos)
       << refused.err;
   EXPECT_NE(refused.err.find("--tetrise"), std::string::npos) << refused.err;

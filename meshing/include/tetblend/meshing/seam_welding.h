@@ -7,7 +7,8 @@
 // Their faces may run them either way (a flat-shaded export orients each
 // facet on its own; the meshing orients the zipped surface consistently).
 // Only such pairs are merged, so two parts that merely touch at a point, a
-// fin of three sheets, or a hole's rim stay apart. Positions are compared
+// fin of three sheets, or a hole's rim stay apart; rims that touch at a
+// point can then be joined there (withTouchingRimsJoined). Positions are compared
 // exactly (the copies of a seam vertex are written from one value).
 
 #include <string>
@@ -29,6 +30,8 @@ struct SeamWelding {
   int mergedVertices = 0;
   /// Pairs of boundary edges zipped together.
   int seamEdges = 0;
+  /// Of mergedVertices, those merged by withTouchingRimsJoined.
+  int rimVertices = 0;
 };
 
 /// Per vertex of `vertices` (finite), a number shared exactly by the vertices
@@ -41,6 +44,15 @@ std::vector<int> positionIds(const Vertices& vertices);
 /// collapse a face, is returned as it is (nothing merged), for the
 /// validation to name its problem.
 SeamWelding weldSeams(const SurfaceMesh& surface);
+
+/// `welding` with, in addition, the vertices on its surface's boundary edges
+/// that share a position merged into one (holes whose rims touch there, as
+/// in a scan), where they share it in each of `examples` too (one vertex per
+/// input vertex; an example with another count is skipped, for the example
+/// checks to name). The merged vertex is pinched: two fans of faces
+/// meet there, and fillHoles closes each hole around it. Nothing is merged
+/// where a face would collapse.
+SeamWelding withTouchingRimsJoined(SeamWelding welding, const std::vector<SurfaceMesh>& examples);
 
 /// `positions` (one row per input vertex, e.g. an example of the surface
 /// `welding` was made from) on the merged surface's rows. Throws InputError

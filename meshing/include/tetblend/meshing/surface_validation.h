@@ -109,8 +109,11 @@ std::vector<SurfaceProblem> validateExample(const SurfaceMesh& rest, const Surfa
 /// ambiguous pattern counts as another surface.
 int flippedQuadDiagonals(const Triangles& rest, const Triangles& example);
 
-/// validateSurface, then throws InputError with the first problem's message
-/// and the number of further problems, if any.
+/// Throws InputError with the first of `problems`' messages and the number of
+/// further problems, if there are any.
+void requireNoProblems(const std::vector<SurfaceProblem>& problems);
+
+/// validateSurface, then requireNoProblems.
 void requireValidRest(const SurfaceMesh& mesh, const std::string& sourceName,
                       const SurfaceValidationOptions& options = {});
 
