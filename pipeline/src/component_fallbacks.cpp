@@ -15,6 +15,7 @@ namespace tetblend {
 namespace {
 
 using prepare_steps::advance;
+using prepare_steps::preparedPart;
 using prepare_steps::roughCount;
 using prepare_steps::say;
 using prepare_steps::tetrisedModel;
@@ -119,7 +120,7 @@ ModelData eachComponentOnItsOwn(const SurfaceMesh& rest, const std::vector<Surfa
     ModelPart prepared{{}, std::move(part.inputVertices)};
     try {
       prepared.model =
-          prepareModel(part.rest, part.examples, restName, exampleNames, options, warningsOnly);
+          preparedPart(part.rest, part.examples, restName, exampleNames, options, warningsOnly);
     } catch (const InputError& error) {
       throw InputError(std::string(error.what()) + where);
     }
@@ -164,7 +165,7 @@ ModelData preparedPartByPart(const SurfaceMesh& rest, const std::vector<SurfaceM
     // (meshable_input.h), as in any model of the tetrisation.
     PrepareOptions perFace = options;
     perFace.tetrise = true;
-    tetrised.model = prepareModel(sheets.rest, sheets.examples, restName, exampleNames, perFace,
+    tetrised.model = preparedPart(sheets.rest, sheets.examples, restName, exampleNames, perFace,
                                   PrepareMessages{});
   } catch (const InputError& error) {
     throw InputError(
@@ -204,7 +205,7 @@ ModelData preparedPartByPart(const SurfaceMesh& rest, const std::vector<SurfaceM
   } else {
     try {
       meshedPart.model =
-          prepareModel(solids.rest, solids.examples, restName, exampleNames, options, messages);
+          preparedPart(solids.rest, solids.examples, restName, exampleNames, options, messages);
     } catch (const InputError& error) {
       throw InputError(std::string(error.what()) +
                        " (vertex and face numbers count the surface without the components "

@@ -26,10 +26,12 @@ namespace {
 using prepare_steps::advance;
 using prepare_steps::checkExamples;
 using prepare_steps::diagnosis;
+using prepare_steps::preparedPart;
 using prepare_steps::refuseSelfIntersecting;
 using prepare_steps::roughCount;
 using prepare_steps::say;
 using prepare_steps::tetrisedModel;
+using prepare_steps::warnUnchangedExamples;
 
 std::string threeDigits(double value) {
   char buffer[32];
@@ -171,7 +173,7 @@ ModelData withoutUnmeshableParts(const SurfaceMesh& rest, const std::vector<Surf
   }
   ModelData model;
   try {
-    model = prepareModel(input.rest, input.examples, restName, exampleNames, options, messages);
+    model = preparedPart(input.rest, input.examples, restName, exampleNames, options, messages);
   } catch (const InputError& error) {
     std::string without = setAside.front();
     for (std::size_t i = 1; i < setAside.size(); ++i) {
@@ -231,7 +233,7 @@ ModelData preparedAsIs(const SurfaceMesh& rest, const std::vector<SurfaceMesh>& 
                            " faces of (almost) zero area are re-split with a neighbour for "
                            "meshing (the blended surfaces keep the input's faces)");
   }
-  checkExamples(rest, examples, restName, exampleNames, messages);
+  checkExamples(rest, examples, exampleNames, messages);
   ModelData model;
   model.surfaceTriangles = rest.triangles;
   model.restSource = restName;
@@ -352,6 +354,17 @@ ModelData prepareModel(const std::string& restPath, const std::vector<std::strin
 ModelData prepareModel(const SurfaceMesh& rest, const std::vector<SurfaceMesh>& examples,
                        const std::string& restName, const std::vector<std::string>& exampleNames,
                        const PrepareOptions& options, const PrepareMessages& messages) {
+  ModelData model = preparedPart(rest, examples, restName, exampleNames, options, messages);
+  warnUnchangedExamples(rest, examples, restName, exampleNames, messages);
+  return model;
+}
+
+ModelData prepare_steps::preparedPart(const SurfaceMesh& rest,
+                                      const std::vector<SurfaceMesh>& examples,
+                                      const std::string& restName,
+                                      const std::vector<std::string>& exampleNames,
+                                      const PrepareOptions& options,
+                                      const PrepareMessages& messages) {
   checkPrepareArguments(examples.size(), options);
   if (exampleNames.size() != examples.size()) {
     throw InputError("prepare: " + std::to_string(exampleNames.size()) + " names given for " +

@@ -52,8 +52,7 @@ void refuseSelfIntersecting(const Triangles& triangles, const std::vector<Surfac
 }
 
 void checkExamples(const SurfaceMesh& rest, const std::vector<SurfaceMesh>& examples,
-                   const std::string& restName, const std::vector<std::string>& exampleNames,
-                   const PrepareMessages& messages) {
+                   const std::vector<std::string>& exampleNames, const PrepareMessages& messages) {
   for (std::size_t k = 0; k < examples.size(); ++k) {
     requireCompatibleExample(rest, examples[k], exampleNames[k]);
     const int flips = examples[k].triangles == rest.triangles
@@ -65,7 +64,16 @@ void checkExamples(const SurfaceMesh& rest, const std::vector<SurfaceMesh>& exam
                                 "exporter that triangulates each frame by its shape): the rest's "
                                 "triangles are used for every example");
     }
-    if (examples[k].vertices == rest.vertices) {
+  }
+}
+
+void warnUnchangedExamples(const SurfaceMesh& rest, const std::vector<SurfaceMesh>& examples,
+                           const std::string& restName,
+                           const std::vector<std::string>& exampleNames,
+                           const PrepareMessages& messages) {
+  for (std::size_t k = 0; k < examples.size() && k < exampleNames.size(); ++k) {
+    if (examples[k].vertices.rows() == rest.vertices.rows() &&
+        examples[k].vertices == rest.vertices) {
       say(messages.warning, exampleNames[k] + ": every vertex equals the rest's (" + restName +
                                 "): blending this example changes nothing");
     }
@@ -80,7 +88,7 @@ ModelData tetrisedModel(const SurfaceMesh& rest, const std::vector<SurfaceMesh>&
   validation.requireSolid = false;
   validation.checkSelfIntersections = false;
   requireValidRest(rest, restName, validation);
-  checkExamples(rest, examples, restName, exampleNames, messages);
+  checkExamples(rest, examples, exampleNames, messages);
   if (options.strict) refuseSelfIntersecting(rest.triangles, examples, exampleNames);
   advance(messages, 1);
   ModelData model;

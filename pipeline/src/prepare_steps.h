@@ -37,11 +37,24 @@ void refuseSelfIntersecting(const Triangles& triangles, const std::vector<Surfac
                             const std::vector<std::string>& exampleNames,
                             const std::vector<int>& faceComponent = {});
 
+/// Warns about each example equal to the rest (one with another vertex
+/// count is left to checkExamples).
+void warnUnchangedExamples(const SurfaceMesh& rest, const std::vector<SurfaceMesh>& examples,
+                           const std::string& restName,
+                           const std::vector<std::string>& exampleNames,
+                           const PrepareMessages& messages);
+
+/// prepareModel without warnUnchangedExamples: for the parts of a surface
+/// prepared each on its own, which would each repeat its warning (and a
+/// part that one example leaves in place still moves with the others).
+ModelData preparedPart(const SurfaceMesh& rest, const std::vector<SurfaceMesh>& examples,
+                       const std::string& restName, const std::vector<std::string>& exampleNames,
+                       const PrepareOptions& options, const PrepareMessages& messages);
+
 /// Refuses an example that is not the rest's surface; warns about one whose
-/// quads are split the other way, and about one equal to the rest.
+/// quads are split the other way.
 void checkExamples(const SurfaceMesh& rest, const std::vector<SurfaceMesh>& examples,
-                   const std::string& restName, const std::vector<std::string>& exampleNames,
-                   const PrepareMessages& messages);
+                   const std::vector<std::string>& exampleNames, const PrepareMessages& messages);
 
 /// The model of the per-face tetrisation: the user's surface as it is (open
 /// or not, seams and all, crossing itself, pinched or oriented any way: each

@@ -83,6 +83,20 @@ TEST_F(TetrisedComponents, BlendsGiveTheRestAndEveryExample) {
   expectTheKeysBack("cape.tbm");
 }
 
+// An example equal to the rest is warned about once, not once per part
+// prepared on its own: the body stays still in it, but blending it moves
+// nothing anywhere.
+TEST_F(TetrisedComponents, AnExampleEqualToTheRestIsWarnedAboutOnce) {
+  const RunResult r = tetblend(
+      {"prepare", path("rest.obj"), path("twist.obj"), path("rest.obj"), "-o", path("same.tbm")},
+      dir_);
+  ASSERT_EQ(r.code, 0) << r.err;
+  const std::string warning = "every vertex equals the rest's";
+  const std::size_t first = r.err.find(warning);
+  ASSERT_NE(first, std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find(warning, first + 1), std::string::npos) << r.err;
+}
+
 // The sheet's corner is one of the body's vertices: the sheet's tets use the
 // body's row there (the two stay one tet component), and the sheet's own
 // copy of it is the one row in no tet.
