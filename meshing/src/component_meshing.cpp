@@ -2,6 +2,7 @@
 
 #include <string>
 
+#include "half_edge_table.h"
 #include "tetblend/core/error.h"
 
 namespace tetblend {
@@ -34,6 +35,34 @@ SurfacePart surfacePart(const SurfaceMesh& surface, const std::vector<int>& face
     }
   }
   return part;
+}
+
+int manifoldRegions(const Triangles& triangles, std::vector<int>& faceRegion) {
+  const auto faceCount = static_cast<std::size_t>(triangles.rows());
+  std::vector<char> skip(faceCount, 0);
+  for (Eigen::Index f = 0; f < triangles.rows(); ++f) {
+    skip[static_cast<std::size_t>(f)] = triangles(f, 0) == triangles(f, 1) ||
+                                        triangles(f, 1) == triangles(f, 2) ||
+                                        triangles(f, 0) == triangles(f, 2);
+  }
+  const detail::HalfEdgeTable table = detail::buildHalfEdgeTable(triangles, skip);
+  detail::UnionFind regions(faceCount);
+  for (const auto& [begin, end] : table.edges) {
+    if (end - begin == 2) {
+      regions.unite(static_cast<std::size_t>(table.halfEdges[begin].face),
+                    static_cast<std::size_t>(table.halfEdges[begin + 1].face));
+    }
+  }
+  std::vector<int> regionOfRoot(faceCount, -1);
+  faceRegion.assign(faceCount, -1);
+  int count = 0;
+  for (std::size_t f = 0; f < faceCount; ++f) {
+    if (skip[f]) continue;
+    int& region = regionOfRoot[regions.find(f)];
+    if (region < 0) region = count++;
+    faceRegion[f] = region;
+  }
+  return count;
 }
 
 TetMesh tetrahedralizeEachComponent(const SurfaceMesh& surface,

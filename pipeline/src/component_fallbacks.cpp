@@ -26,12 +26,12 @@ using prepare_steps::tetrisedModel;
 std::vector<int> componentsWithoutInterior(const SeamWelding& welding, const std::string& restName,
                                            const PrepareOptions& options, int& count) {
   std::vector<int> faceComponent;
-  const std::vector<SurfaceComponent> components =
-      surfaceComponents(welding.surface, &faceComponent);
-  std::vector<int> refused(components.size(), 0);
+  const auto components =
+      static_cast<std::size_t>(manifoldRegions(welding.surface.triangles, faceComponent));
+  std::vector<int> refused(components, 0);
   count = 0;
-  for (std::size_t c = 0; c < components.size(); ++c) {
-    if (components.size() == 1) {  // the surface itself, which meshing refused
+  for (std::size_t c = 0; c < components; ++c) {
+    if (components == 1) {  // the surface itself, which meshing refused
       refused[c] = 1;
       ++count;
       break;
@@ -102,7 +102,7 @@ ModelData eachComponentOnItsOwn(const SurfaceMesh& rest, const std::vector<Surfa
                                 const PrepareOptions& options, const PrepareMessages& messages,
                                 const SeamWelding& welding, const InputError& refusal) {
   std::vector<int> faceComponent;
-  const auto count = static_cast<int>(surfaceComponents(welding.surface, &faceComponent).size());
+  const int count = manifoldRegions(welding.surface.triangles, faceComponent);
   if (count < 2) throw refusal;
   std::vector<ModelPart> parts;
   Eigen::Index tets = 0;

@@ -1,9 +1,11 @@
 #pragma once
 // Private to prepare: what it does when the rest as a whole cannot be
-// meshed with an interior, part by part. Components that cannot be filled
-// with tets on their own get one tet per face; when every component meshes
-// on its own but not together, each is prepared on its own. The parts'
-// models are joined (model_join.h).
+// meshed with an interior, part by part. Its parts are its components, split
+// where an edge joins more than two faces (manifoldRegions: a fin on a body,
+// two parts touching along an edge). Parts that cannot be filled with tets
+// on their own get one tet per face; when every part meshes on its own but
+// not together, each is prepared on its own. The parts' models are joined
+// (model_join.h), sharing the rows of the vertices they share.
 
 #include <string>
 #include <vector>

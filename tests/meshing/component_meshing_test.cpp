@@ -170,5 +170,35 @@ TEST(ComponentMeshing, ExampleWhoseComponentsCollideIsClean) {
   EXPECT_EQ(built.steinerPoints, 0);
 }
 
+// Regions part where an edge has more than two faces, and nowhere else:
+// two disjoint spheres are two regions either way; a fin (a face on a
+// sphere's edge, with a face of its own beyond) is a region of its own, and
+// the sphere stays one; a face repeating a vertex gets -1.
+TEST(ComponentMeshing, ManifoldRegionsPartAtEdgesOfMoreThanTwoFaces) {
+  SurfaceMesh spheres = join(icosphere(1), icosphere(1));
+  spheres.vertices.bottomRows(icosphere(1).vertices.rows()).col(0).array() += 3.0;
+  std::vector<int> region, component;
+  ASSERT_EQ(manifoldRegions(spheres.triangles, region), 2);
+  surfaceComponents(spheres, &component);
+  EXPECT_EQ(region, component);
+
+  SurfaceMesh fin = icosphere(1);
+  const auto sphereFaces = static_cast<int>(fin.triangles.rows());
+  const int a = fin.triangles(0, 0), b = fin.triangles(0, 1);
+  const auto apex = static_cast<int>(fin.vertices.rows());
+  fin.vertices.conservativeResize(apex + 2, 3);
+  fin.vertices.row(apex) = 2.0 * (fin.vertices.row(a) + fin.vertices.row(b));
+  fin.vertices.row(apex + 1) = 3.0 * fin.vertices.row(a);
+  fin.triangles.conservativeResize(sphereFaces + 3, 3);
+  fin.triangles.row(sphereFaces) << a, b, apex;
+  fin.triangles.row(sphereFaces + 1) << a, apex, apex + 1;  // joined to the fin's first face
+  fin.triangles.row(sphereFaces + 2) << a, a, b;            // repeats a vertex
+  ASSERT_EQ(manifoldRegions(fin.triangles, region), 2);
+  for (int f = 0; f < sphereFaces; ++f) EXPECT_EQ(region[static_cast<std::size_t>(f)], 0) << f;
+  EXPECT_EQ(region[static_cast<std::size_t>(sphereFaces)], 1);
+  EXPECT_EQ(region[static_cast<std::size_t>(sphereFaces + 1)], 1);
+  EXPECT_EQ(region[static_cast<std::size_t>(sphereFaces + 2)], -1);
+}
+
 }  // namespace
 }  // namespace tetblend

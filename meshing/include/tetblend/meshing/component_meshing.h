@@ -24,6 +24,14 @@ struct SurfacePart {
 SurfacePart surfacePart(const SurfaceMesh& surface, const std::vector<int>& faceComponent,
                         int component);
 
+/// Per face of `triangles`, its region: faces joined through edges that
+/// exactly two faces share, so that an edge of three or more faces (a fin
+/// on a body, two parts touching along an edge) parts the regions meeting
+/// there. Faces with a repeated index get -1. Returns the region count;
+/// regions are numbered by their first face. Without such edges the regions
+/// are surfaceComponents' components.
+int manifoldRegions(const Triangles& triangles, std::vector<int>& faceRegion);
+
 /// Tetrahedralises the faces of each label 0..componentCount-1 of
 /// `faceComponent` on their own (tetrahedralize, with `options`) and joins
 /// the meshes: rows 0..#V-1 are `surface`'s vertices bit for bit (each used
