@@ -37,7 +37,7 @@ SurfacePart surfacePart(const SurfaceMesh& surface, const std::vector<int>& face
   return part;
 }
 
-int manifoldRegions(const Triangles& triangles, std::vector<int>& faceRegion) {
+int manifoldRegions(const Triangles& triangles, std::vector<int>& faceRegion, int* splitEdges) {
   const auto faceCount = static_cast<std::size_t>(triangles.rows());
   std::vector<char> skip(faceCount, 0);
   for (Eigen::Index f = 0; f < triangles.rows(); ++f) {
@@ -47,7 +47,9 @@ int manifoldRegions(const Triangles& triangles, std::vector<int>& faceRegion) {
   }
   const detail::HalfEdgeTable table = detail::buildHalfEdgeTable(triangles, skip);
   detail::UnionFind regions(faceCount);
+  if (splitEdges != nullptr) *splitEdges = 0;
   for (const auto& [begin, end] : table.edges) {
+    if (end - begin > 2 && splitEdges != nullptr) ++*splitEdges;
     if (end - begin == 2) {
       regions.unite(static_cast<std::size_t>(table.halfEdges[begin].face),
                     static_cast<std::size_t>(table.halfEdges[begin + 1].face));

@@ -20,14 +20,26 @@ using prepare_steps::roughCount;
 using prepare_steps::say;
 using prepare_steps::tetrisedModel;
 
+// "components", or "parts (its components, split at K edges ...)" when
+// edges of more than two faces split them (manifoldRegions); `more` goes
+// inside the parentheses.
+std::string partsNoun(int splitEdges, const std::string& more = "") {
+  if (splitEdges == 0) return "components" + (more.empty() ? "" : " (" + more + ")");
+  return "parts (its components, split at " + std::to_string(splitEdges) +
+         (splitEdges == 1 ? " edge" : " edges") + " of more than two faces" +
+         (more.empty() ? "" : "; " + more) + ")";
+}
+
 // Per face of the input, 1 where its component (of the zipped surface)
 // cannot be meshed with an interior on its own (meshedRest refuses it: an
 // open sheet no fill closes, faces that cross too deeply, ...), else 0.
+// `splitEdges` receives manifoldRegions' count of edges that split parts.
 std::vector<int> componentsWithoutInterior(const SeamWelding& welding, const std::string& restName,
-                                           const PrepareOptions& options, int& count) {
+                                           const PrepareOptions& options, int& count,
+                                           int& splitEdges) {
   std::vector<int> faceComponent;
-  const auto components =
-      static_cast<std::size_t>(manifoldRegions(welding.surface.triangles, faceComponent));
+  const auto components = static_cast<std::size_t>(
+      manifoldRegions(welding.surface.triangles, faceComponent, &splitEdges));
   std::vector<int> refused(components, 0);
   count = 0;
   for (std::size_t c = 0; c < components; ++c) {
@@ -102,7 +114,8 @@ ModelData eachComponentOnItsOwn(const SurfaceMesh& rest, const std::vector<Surfa
                                 const PrepareOptions& options, const PrepareMessages& messages,
                                 const SeamWelding& welding, const InputError& refusal) {
   std::vector<int> faceComponent;
-  const int count = manifoldRegions(welding.surface.triangles, faceComponent);
+  int splitEdges = 0;
+  const int count = manifoldRegions(welding.surface.triangles, faceComponent, &splitEdges);
   if (count < 2) throw refusal;
   std::vector<ModelPart> parts;
   Eigen::Index tets = 0;
@@ -128,8 +141,8 @@ ModelData eachComponentOnItsOwn(const SurfaceMesh& rest, const std::vector<Surfa
     parts.push_back(std::move(prepared));
   }
   say(messages.note, std::string(refusal.what()) + "; instead, each of its " +
-                         std::to_string(count) + " components is prepared on its own (" +
-                         roughCount(tets) + " tets in all)");
+                         std::to_string(count) + " " + partsNoun(splitEdges) +
+                         " is prepared on its own (" + roughCount(tets) + " tets in all)");
   advance(messages, prepareStepCount(examples.size()));
   return joinedModel(parts, rest.triangles, static_cast<int>(rest.vertices.rows()));
 }
@@ -142,8 +155,9 @@ ModelData preparedPartByPart(const SurfaceMesh& rest, const std::vector<SurfaceM
                              const PrepareOptions& options, const PrepareMessages& messages,
                              const SeamWelding& welding, const InputError& refusal) {
   if (!options.fillHoles || options.strict) throw refusal;
-  int count = 0;
-  const std::vector<int> label = componentsWithoutInterior(welding, restName, options, count);
+  int count = 0, splitEdges = 0;
+  const std::vector<int> label =
+      componentsWithoutInterior(welding, restName, options, count, splitEdges);
   if (count == 0) {
     return eachComponentOnItsOwn(rest, examples, restName, exampleNames, options, messages, welding,
                                  refusal);
@@ -189,9 +203,9 @@ ModelData preparedPartByPart(const SurfaceMesh& rest, const std::vector<SurfaceM
   } else {
     const auto firstFace = std::find(label.begin(), label.end(), 1) - label.begin();
     say(messages.note,
-        restName + ": " + std::to_string(count) + " of its components (first: the one of face " +
-            std::to_string(firstFace) +
-            ") cannot be filled with tets on their own (open sheets that no fill "
+        restName + ": " + std::to_string(count) + " of its " +
+            partsNoun(splitEdges, "first: the one of face " + std::to_string(firstFace)) +
+            " cannot be filled with tets on their own (open sheets that no fill "
             "without new vertices closes, or faces that cross): each of their " +
             std::to_string(sheets.rest.triangles.rows() + static_cast<Eigen::Index>(flat.size())) +
             " faces gets a tet of its own, as with --tetrise" + flatFaces +

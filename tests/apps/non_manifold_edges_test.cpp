@@ -53,7 +53,11 @@ TEST_F(NonManifoldEdges, AFinGetsATetOfItsOwnAndTheBodyKeepsItsInterior) {
 
   const RunResult r = tetblend(prepareArgs("fin.tbm"), dir_);
   ASSERT_EQ(r.code, 0) << r.err;
-  EXPECT_NE(r.err.find("1 of its components"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("1 of its parts (its components, split at 1 edge of more than two "
+                       "faces; first: the one of face " +
+                       std::to_string(rest.triangles.rows() - 1) + ")"),
+            std::string::npos)
+      << r.err;
   EXPECT_NE(r.err.find("each of their 1 faces gets a tet of its own"), std::string::npos) << r.err;
   const ModelData m = readModelFile(path("fin.tbm"));
   EXPECT_TRUE(m.inputVertices(m.rest.vertices) == rest.vertices);
@@ -117,7 +121,9 @@ TEST_F(NonManifoldEdges, BodiesTouchingAlongAnEdgeAreEachMeshedOnTheirOwn) {
   const RunResult r = tetblend(prepareArgs("touching.tbm"), dir_);
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.err.find("is shared by 4 faces"), std::string::npos) << r.err;
-  EXPECT_NE(r.err.find("each of its 2 components is prepared on its own"), std::string::npos)
+  EXPECT_NE(r.err.find("each of its 2 parts (its components, split at 1 edge of more than two "
+                       "faces) is prepared on its own"),
+            std::string::npos)
       << r.err;
   const ModelData m = readModelFile(path("touching.tbm"));
   EXPECT_TRUE(m.inputVertices(m.rest.vertices) == rest.vertices);

@@ -29,8 +29,10 @@ SurfacePart surfacePart(const SurfaceMesh& surface, const std::vector<int>& face
 /// on a body, two parts touching along an edge) parts the regions meeting
 /// there. Faces with a repeated index get -1. Returns the region count;
 /// regions are numbered by their first face. Without such edges the regions
-/// are surfaceComponents' components.
-int manifoldRegions(const Triangles& triangles, std::vector<int>& faceRegion);
+/// are surfaceComponents' components. `splitEdges`, when given, receives
+/// the number of such edges.
+int manifoldRegions(const Triangles& triangles, std::vector<int>& faceRegion,
+                    int* splitEdges = nullptr);
 
 /// Tetrahedralises the faces of each label 0..componentCount-1 of
 /// `faceComponent` on their own (tetrahedralize, with `options`) and joins
