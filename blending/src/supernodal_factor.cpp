@@ -11,6 +11,7 @@
 #include "supernodal_kernels.h"
 #include "tetblend/core/error.h"
 #include "tetblend/core/memory_preflight.h"
+#include "tetblend/core/openmp_teams.h"
 
 namespace tetblend {
 namespace stitch_detail {
@@ -41,6 +42,7 @@ cholmod_factor* cholmodFactor(cholmod_sparse& view, cholmod_common& common) {
       throw;
     }
   }
+  letOpenMpShrinkTeams();
   const bool factored = factor != nullptr && cholmod_factorize(&view, factor, &common) &&
                         common.status == CHOLMOD_OK && factor->minor >= factor->n;
   if (!factored || !factor->is_super || !factor->is_ll) {

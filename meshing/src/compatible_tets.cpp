@@ -26,6 +26,7 @@
 #include "tet_elements.h"
 #include "tetblend/core/error.h"
 #include "tetblend/core/memory_preflight.h"
+#include "tetblend/core/openmp_teams.h"
 #include "tetblend/core/polar.h"
 #include "tetblend/core/sym3.h"
 #include "tetblend/core/tet_geometry.h"
@@ -141,6 +142,7 @@ struct CompatibleTetBuilder::Impl {
                 blasWorkspaceBytes(),
             "the interior's Cholesky factorisation (" + std::to_string(interiorCount) +
                 " interior vertices)");
+        letOpenMpShrinkTeams();
 #endif
         solver.factorize(blocks.interiorLower);
         if (solver.info() != Eigen::Success) {

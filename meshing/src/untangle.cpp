@@ -19,6 +19,7 @@
 #include <Eigen/CholmodSupport>
 #endif
 
+#include "tetblend/core/openmp_teams.h"
 #include "untangle_tet_energy.h"
 
 namespace tetblend {
@@ -360,6 +361,7 @@ class NewtonSolver {
     }
 #ifdef TETBLEND_HAVE_CHOLMOD
     if (supernodal_) {
+      letOpenMpShrinkTeams();
       supernodalSolver_.factorize(matrix);
       return supernodalSolver_.info() == Eigen::Success;
     }
