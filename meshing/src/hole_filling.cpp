@@ -93,7 +93,7 @@ int fansAround(const Triangles& tri, const std::vector<int>& faces, std::vector<
       for (int a = 0; a < 3; ++a) {
         for (int b = 0; b < 3; ++b) shared += tri(faces[i], a) == tri(faces[j], b) ? 1 : 0;
       }
-      if (shared == 2) join.unite(i, j);  // both contain v, so the edge is at v
+      if (shared == 2) join.unite(i, j);  // the vertex and one more: an edge at it
     }
   }
   fan.assign(faces.size(), -1);

@@ -25,11 +25,17 @@ struct HoleFilling {
 /// Finds the boundary loops of `surface` (#V by 3 positions, #F by 3
 /// indices, read from `sourceName`, used in messages only) and triangulates
 /// each without adding vertices; no fill edge duplicates an edge of the
-/// surface. A closed surface gets no triangles (and is not checked further).
-/// Otherwise the surface must be an oriented manifold with boundary: throws
-/// InputError naming the vertex if a vertex lies on two boundary loops (or on
-/// one loop twice), the first problem of validateSurface (without the closed
-/// and self-intersection checks) if there is one, and naming the hole if CGAL
+/// surface (for holes through a pinched vertex, below, the closed surface's
+/// validation checks that). A closed surface gets no triangles (and is not
+/// checked further). Otherwise the surface must be an oriented manifold with
+/// boundary, but for pinched vertices: a vertex on four boundary edges where
+/// two fans of faces meet (two holes touching there, or one touching
+/// itself). At such a vertex each hole goes on in the other fan, and its
+/// fill (CGAL's triangulate_hole_polyline) takes a corner of its own there,
+/// which makes the closed surface manifold. Throws InputError naming the
+/// vertex for any other vertex on more than two boundary edges, the first
+/// other problem of validateSurface (without the closed and
+/// self-intersection checks) if there is one, and naming the hole if CGAL
 /// finds no triangulation of it. Whether the fill intersects the surface is
 /// not checked here (validate the closed surface).
 HoleFilling fillHoles(const SurfaceMesh& surface, const std::string& sourceName);
