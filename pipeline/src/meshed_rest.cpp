@@ -39,13 +39,38 @@ SurfaceMesh closedSurface(const SurfaceMesh& oriented, const std::string& restNa
   return closed;
 }
 
-// Two vertices at the same position, the smallest such pair of indices, or
-// (-1, -1): how a surface cut open along a texture or normal seam looks.
-std::pair<int, int> coincidentVertices(const Vertices& vertices) {
-  const std::vector<int> id = positionIds(vertices);
-  std::vector<int> firstAt(id.size(), -1);  // per position, its smallest vertex
+// Per vertex, whether it lies on a boundary edge (an edge of one face).
+std::vector<char> rimVertices(const SurfaceMesh& surface) {
+  std::vector<std::pair<int, int>> edges;
+  for (Eigen::Index f = 0; f < surface.triangles.rows(); ++f) {
+    for (int c = 0; c < 3; ++c) {
+      const int a = surface.triangles(f, c), b = surface.triangles(f, (c + 1) % 3);
+      edges.emplace_back(std::min(a, b), std::max(a, b));
+    }
+  }
+  std::sort(edges.begin(), edges.end());
+  std::vector<char> onRim(static_cast<std::size_t>(surface.vertices.rows()), 0);
+  for (std::size_t i = 0; i < edges.size();) {
+    std::size_t end = i + 1;
+    while (end < edges.size() && edges[end] == edges[i]) ++end;
+    if (end - i == 1) {
+      onRim[static_cast<std::size_t>(edges[i].first)] = 1;
+      onRim[static_cast<std::size_t>(edges[i].second)] = 1;
+    }
+    i = end;
+  }
+  return onRim;
+}
+
+// Two vertices on the rims of holes at the same position, the smallest such
+// pair of indices, or (-1, -1).
+std::pair<int, int> coincidentRimVertices(const SurfaceMesh& surface) {
+  const std::vector<char> onRim = rimVertices(surface);
+  const std::vector<int> id = positionIds(surface.vertices);
+  std::vector<int> firstAt(id.size(), -1);  // per position, its smallest rim vertex
   std::pair<int, int> smallest{-1, -1};
   for (int v = 0; v < static_cast<int>(id.size()); ++v) {
+    if (!onRim[static_cast<std::size_t>(v)]) continue;
     int& first = firstAt[static_cast<std::size_t>(id[static_cast<std::size_t>(v)])];
     if (first < 0) {
       first = v;
@@ -56,27 +81,23 @@ std::pair<int, int> coincidentVertices(const Vertices& vertices) {
   return smallest;
 }
 
-// An open surface with two vertices at one position after its seams were
-// zipped and its touching rims joined (seam_welding.h): rims that touch
-// there but part in an example, a rim that touches a sheet's inside, or
-// more than two sheets along one edge. No fill without new vertices closes
-// them, and merging the two would pinch the surface.
+// An open surface with two rim vertices at one position after its seams
+// were zipped and its touching rims joined (seam_welding.h): rims that
+// touch there but part in an example, or more than two sheets along one
+// edge. No fill without new vertices closes them, and merging the two would
+// pinch the surface. (A rim that only touches the surface elsewhere is left
+// to the self-intersection checks of the closed surface.)
 void refuseTouchingRims(const SurfaceMesh& surface, const std::string& restName) {
-  if (!surface.vertices.allFinite()) return;  // validateSurface names the value
-  const auto [a, b] = coincidentVertices(surface.vertices);
+  const bool indicesInRange = surface.triangles.size() > 0 && surface.triangles.minCoeff() >= 0 &&
+                              surface.triangles.maxCoeff() < surface.vertices.rows();
+  if (!surface.vertices.allFinite() || !indicesInRange) return;  // validateSurface names them
+  const auto [a, b] = coincidentRimVertices(surface);
   if (a < 0) return;
-  SurfaceValidationOptions topology;
-  topology.checkSelfIntersections = false;
-  const SurfaceValidation checked = validateSurface(surface, restName, topology);
-  const bool open = std::any_of(
-      checked.problems.begin(), checked.problems.end(),
-      [](const SurfaceProblem& p) { return p.kind == SurfaceProblemKind::kBoundaryEdge; });
-  if (!open) return;
   throw InputError(restName + ": vertices " + std::to_string(a) + " and " + std::to_string(b) +
                    " are at the same position where the rims of its holes touch, and stay apart "
-                   "(they part in an example, or one is not on a rim), so no fill without new "
-                   "vertices closes the holes: close them yourself (e.g. MeshLab's Close "
-                   "Holes), or use the per-face tetrisation (--tetrise)");
+                   "(they part in an example), so no fill without new vertices closes the "
+                   "holes: close them yourself (e.g. MeshLab's Close Holes), or use the per-face "
+                   "tetrisation (--tetrise)");
 }
 
 // A triangle filling a hole that intersects the surface: the fill is fixed by

@@ -161,6 +161,42 @@ TEST_F(OpenRest, TouchingHolesAreFilledAroundTheirSharedVertex) {
   }
 }
 
+TEST_F(OpenRest, ARimTouchingAnotherPartsVertexIsMeshedWhole) {
+  // A ball beside the tube, moved so that one of its vertices lies exactly
+  // on a vertex of the tube's top rim (two vertices at one position, only
+  // one of them on a rim, as where a scan's hole runs into a fold). That is
+  // no pair of touching rims: the tube's holes are filled as usual, and the
+  // two closed parts, which touch at that point, are meshed each on its
+  // own within one model, not prepared part by part. The keys are exact.
+  SurfaceMesh ball = testing_surfaces::icosphere(2);
+  ball.vertices *= 0.4;
+  Eigen::Index lowest = 0;
+  ball.vertices.col(0).minCoeff(&lowest);
+  const Eigen::RowVector3d rim = tube_.mesh.vertices.row(tube_.vertex(8, 0));  // (0.5, 0, 4)
+  ball.vertices.rowwise() += rim - ball.vertices.row(lowest);
+  const SurfaceMesh rest = testing_surfaces::join(tube_.mesh, ball);
+  const SurfaceMesh bent{
+      bendAboutAxis(rest.vertices, Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitZ(),
+                    Eigen::Vector3d::UnitX(), 0.5 * kPi, 8.0),
+      rest.triangles};
+  writeSurface(path("ball.obj"), rest);
+  writeSurface(path("ball_bent.obj"), bent);
+  const fs::path model = dir_ / "ball.tbm";
+  const RunResult r =
+      tetblend({"prepare", path("ball.obj"), path("ball_bent.obj"), "-o", model.string()}, dir_);
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.err.find("filled 2 holes"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("rims of its holes"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("prepared on its own"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("a tet of its own"), std::string::npos) << r.err;
+  for (const auto& [w, expected] : {std::pair{"0", &rest}, std::pair{"1", &bent}}) {
+    const fs::path out = dir_ / (std::string("ball") + w + ".vtp");
+    ASSERT_EQ(tetblend({"blend", model.string(), "-w", w, "-o", out.string()}, dir_).code, 0);
+    EXPECT_LT(maxDistance(pointsOf(readVtp(out)), expected->vertices),
+              kInterpolationRelTol * boundingBoxDiagonal(rest.vertices));
+  }
+}
+
 TEST_F(OpenRest, TubesTouchingAtARimVertexArePreparedEachOnItsOwn) {
   // A second tube on top of the first, one diameter aside: its bottom ring
   // touches the first's top ring at one point, where the two share a vertex
