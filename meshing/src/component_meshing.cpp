@@ -39,12 +39,7 @@ SurfacePart surfacePart(const SurfaceMesh& surface, const std::vector<int>& face
 
 int manifoldRegions(const Triangles& triangles, std::vector<int>& faceRegion, int* splitEdges) {
   const auto faceCount = static_cast<std::size_t>(triangles.rows());
-  std::vector<char> skip(faceCount, 0);
-  for (Eigen::Index f = 0; f < triangles.rows(); ++f) {
-    skip[static_cast<std::size_t>(f)] = triangles(f, 0) == triangles(f, 1) ||
-                                        triangles(f, 1) == triangles(f, 2) ||
-                                        triangles(f, 0) == triangles(f, 2);
-  }
+  const std::vector<char> skip = detail::repeatedIndexFaces(triangles);
   const detail::HalfEdgeTable table = detail::buildHalfEdgeTable(triangles, skip);
   detail::UnionFind regions(faceCount);
   if (splitEdges != nullptr) *splitEdges = 0;

@@ -34,5 +34,24 @@ HalfEdgeTable buildHalfEdgeTable(const Triangles& triangles, const std::vector<c
   return table;
 }
 
+std::vector<char> repeatedIndexFaces(const Triangles& triangles) {
+  std::vector<char> skip(static_cast<std::size_t>(triangles.rows()), 0);
+  for (Eigen::Index f = 0; f < triangles.rows(); ++f) {
+    skip[static_cast<std::size_t>(f)] = repeatsAVertex(triangles, f) ? 1 : 0;
+  }
+  return skip;
+}
+
+std::vector<char> rimVertices(const Triangles& triangles, Eigen::Index vertexCount) {
+  const HalfEdgeTable table = buildHalfEdgeTable(triangles, repeatedIndexFaces(triangles));
+  std::vector<char> onRim(static_cast<std::size_t>(vertexCount), 0);
+  for (const auto& [begin, end] : table.edges) {
+    if (end - begin != 1) continue;
+    onRim[static_cast<std::size_t>(table.halfEdges[begin].lo)] = 1;
+    onRim[static_cast<std::size_t>(table.halfEdges[begin].hi)] = 1;
+  }
+  return onRim;
+}
+
 }  // namespace detail
 }  // namespace tetblend

@@ -30,6 +30,18 @@ struct HalfEdgeTable {
 
 HalfEdgeTable buildHalfEdgeTable(const Triangles& triangles, const std::vector<char>& skipFace);
 
+/// Whether face f repeats a vertex (a, a, b): it covers nothing.
+inline bool repeatsAVertex(const Triangles& t, Eigen::Index f) {
+  return t(f, 0) == t(f, 1) || t(f, 1) == t(f, 2) || t(f, 0) == t(f, 2);
+}
+
+/// Per face, 1 where it repeats a vertex: the faces the checks skip.
+std::vector<char> repeatedIndexFaces(const Triangles& triangles);
+
+/// Per vertex (of `vertexCount`), 1 where it lies on a boundary edge (an
+/// edge of exactly one face), faces that repeat a vertex skipped.
+std::vector<char> rimVertices(const Triangles& triangles, Eigen::Index vertexCount);
+
 /// Union-find with path halving.
 class UnionFind {
  public:

@@ -41,12 +41,8 @@ struct Border {
 // The borders of every boundary edge (edge of one face); faces with a
 // repeated index are skipped (validateSurface reports them).
 std::vector<Border> bordersOf(const Triangles& tri) {
-  std::vector<char> skip(static_cast<std::size_t>(tri.rows()), 0);
-  for (Eigen::Index f = 0; f < tri.rows(); ++f) {
-    skip[static_cast<std::size_t>(f)] =
-        tri(f, 0) == tri(f, 1) || tri(f, 1) == tri(f, 2) || tri(f, 0) == tri(f, 2);
-  }
-  const detail::HalfEdgeTable table = detail::buildHalfEdgeTable(tri, skip);
+  const detail::HalfEdgeTable table =
+      detail::buildHalfEdgeTable(tri, detail::repeatedIndexFaces(tri));
   std::vector<Border> borders;
   for (const auto& [begin, end] : table.edges) {
     if (end - begin != 1) continue;
@@ -190,6 +186,10 @@ std::vector<HoleLoop> holeLoops(const std::vector<Border>& borders,
   return loops;
 }
 
+Kernel::Point_3 pointOf(const SurfaceMesh& surface, int i) {
+  return Kernel::Point_3(surface.vertices(i, 0), surface.vertices(i, 1), surface.vertices(i, 2));
+}
+
 // The surface as a CGAL halfedge mesh, vertex i and face f keeping their
 // indices, but that the faces of the second fan at each pinched vertex use
 // a vertex of their own (appended), so that every vertex is manifold. The
@@ -200,14 +200,12 @@ Mesh halfedgeMesh(const SurfaceMesh& surface, const std::map<int, std::map<int, 
   mesh.reserve(static_cast<Mesh::size_type>(surface.vertices.rows()),
                static_cast<Mesh::size_type>(3 * surface.triangles.rows()),
                static_cast<Mesh::size_type>(surface.triangles.rows()));
-  const auto point = [&](int i) {
-    return Kernel::Point_3(surface.vertices(i, 0), surface.vertices(i, 1), surface.vertices(i, 2));
-  };
   for (Eigen::Index i = 0; i < surface.vertices.rows(); ++i) {
-    mesh.add_vertex(point(static_cast<int>(i)));
+    mesh.add_vertex(pointOf(surface, static_cast<int>(i)));
   }
   std::map<int, Mesh::Vertex_index> secondFan;
-  for (const auto& entry : pinched) secondFan[entry.first] = mesh.add_vertex(point(entry.first));
+  for (const auto& entry : pinched)
+    secondFan[entry.first] = mesh.add_vertex(pointOf(surface, entry.first));
   for (Eigen::Index f = 0; f < surface.triangles.rows(); ++f) {
     std::array<Mesh::Vertex_index, 3> corners;
     for (int c = 0; c < 3; ++c) {
@@ -239,21 +237,18 @@ InputError noTriangulation(const std::string& name, std::size_t size, int vertex
 void fillAlongPolyline(const SurfaceMesh& surface, const std::vector<Border>& borders,
                        const HoleLoop& loop, const std::string& name,
                        std::vector<std::array<int, 3>>& triangles) {
-  const auto point = [&](int i) {
-    return Kernel::Point_3(surface.vertices(i, 0), surface.vertices(i, 1), surface.vertices(i, 2));
-  };
   std::vector<int> corner;
   std::vector<Kernel::Point_3> points, third;
   for (const int b : loop.borders) {
     const Border& border = borders[static_cast<std::size_t>(b)];
     corner.push_back(border.from);
-    points.push_back(point(border.from));
+    points.push_back(pointOf(surface, border.from));
     int other = 0;
     for (int c = 0; c < 3; ++c) {
       const int v = surface.triangles(border.face, c);
       if (v != border.from && v != border.to) other = v;
     }
-    third.push_back(point(other));
+    third.push_back(pointOf(surface, other));
   }
   std::vector<CGAL::Triple<int, int, int>> patch;
   CGAL::Polygon_mesh_processing::triangulate_hole_polyline(points, third,

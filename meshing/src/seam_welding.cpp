@@ -89,6 +89,10 @@ SeamWelding merged(const SurfaceMesh& surface, detail::UnionFind& groups) {
 
 }  // namespace
 
+std::vector<char> rimVertices(const SurfaceMesh& surface) {
+  return detail::rimVertices(surface.triangles, surface.vertices.rows());
+}
+
 std::vector<int> positionIds(const Vertices& vertices) {
   std::vector<int> order(static_cast<std::size_t>(vertices.rows()));
   for (std::size_t i = 0; i < order.size(); ++i) order[i] = static_cast<int>(i);
@@ -136,14 +140,7 @@ SeamWelding weldSeams(const SurfaceMesh& surface) {
 SeamWelding withTouchingRimsJoined(SeamWelding welding, const std::vector<SurfaceMesh>& examples) {
   const SurfaceMesh& surface = welding.surface;
   if (!indicesInRange(surface) || !surface.vertices.allFinite()) return welding;
-  std::vector<char> onRim(static_cast<std::size_t>(surface.vertices.rows()), 0);
-  const detail::HalfEdgeTable table =
-      detail::buildHalfEdgeTable(surface.triangles, std::vector<char>(surface.triangles.rows(), 0));
-  for (const auto& [begin, end] : table.edges) {
-    if (end - begin != 1) continue;
-    onRim[static_cast<std::size_t>(table.halfEdges[begin].lo)] = 1;
-    onRim[static_cast<std::size_t>(table.halfEdges[begin].hi)] = 1;
-  }
+  const std::vector<char> onRim = rimVertices(surface);
   // An input vertex of each row, to read the examples' positions there.
   std::vector<int> inputOf(onRim.size(), -1);
   for (std::size_t v = welding.rowOf.size(); v-- > 0;) {

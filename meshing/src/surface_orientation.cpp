@@ -17,18 +17,6 @@ namespace {
 // a point off a closed, consistently oriented surface.
 constexpr double kInsideWinding = 0.5;
 
-bool hasRepeatedIndex(const Triangles& t, Eigen::Index f) {
-  return t(f, 0) == t(f, 1) || t(f, 1) == t(f, 2) || t(f, 0) == t(f, 2);
-}
-
-std::vector<char> repeatedIndexFaces(const Triangles& triangles) {
-  std::vector<char> skip(static_cast<std::size_t>(triangles.rows()), 0);
-  for (Eigen::Index f = 0; f < triangles.rows(); ++f) {
-    skip[static_cast<std::size_t>(f)] = hasRepeatedIndex(triangles, f) ? 1 : 0;
-  }
-  return skip;
-}
-
 Eigen::Vector3d corner(const SurfaceMesh& mesh, int f, int k) {
   return mesh.vertices.row(mesh.triangles(f, k)).transpose();
 }
@@ -64,7 +52,7 @@ std::vector<SurfaceComponent> surfaceComponents(const SurfaceMesh& mesh,
                                                 std::vector<int>* faceComponent) {
   const Triangles& tri = mesh.triangles;
   const std::size_t faceCount = static_cast<std::size_t>(tri.rows());
-  const std::vector<char> skip = repeatedIndexFaces(tri);
+  const std::vector<char> skip = detail::repeatedIndexFaces(tri);
   const detail::HalfEdgeTable table = detail::buildHalfEdgeTable(tri, skip);
 
   detail::UnionFind sets(faceCount);
@@ -144,7 +132,8 @@ OrientationFix orientConsistently(SurfaceMesh& mesh) {
   checkIndices(mesh);
   Triangles& tri = mesh.triangles;
   const std::size_t faceCount = static_cast<std::size_t>(tri.rows());
-  const detail::HalfEdgeTable table = detail::buildHalfEdgeTable(tri, repeatedIndexFaces(tri));
+  const detail::HalfEdgeTable table =
+      detail::buildHalfEdgeTable(tri, detail::repeatedIndexFaces(tri));
 
   // Neighbours across manifold edges, with whether they run the edge the same way.
   struct Link {
@@ -171,7 +160,7 @@ OrientationFix orientConsistently(SurfaceMesh& mesh) {
   // Breadth-first propagation; flip[f] = 1 when face f must be reversed.
   std::vector<int> flip(faceCount, -1);
   for (std::size_t seed = 0; seed < faceCount; ++seed) {
-    if (flip[seed] >= 0 || hasRepeatedIndex(tri, static_cast<Eigen::Index>(seed))) continue;
+    if (flip[seed] >= 0 || detail::repeatsAVertex(tri, static_cast<Eigen::Index>(seed))) continue;
     std::vector<std::size_t> members{seed};
     std::deque<std::size_t> queue{seed};
     flip[seed] = 0;

@@ -117,12 +117,8 @@ void checkUnreferenced(const SurfaceMesh& mesh, Collector& out) {
 
 void checkEdges(const SurfaceMesh& mesh, const SurfaceValidationOptions& options, Collector& out) {
   const Triangles& tri = mesh.triangles;
-  std::vector<char> skip(static_cast<std::size_t>(tri.rows()), 0);
-  for (Eigen::Index f = 0; f < tri.rows(); ++f) {
-    skip[static_cast<std::size_t>(f)] =
-        tri(f, 0) == tri(f, 1) || tri(f, 1) == tri(f, 2) || tri(f, 0) == tri(f, 2);
-  }
-  const detail::HalfEdgeTable table = detail::buildHalfEdgeTable(tri, skip);
+  const detail::HalfEdgeTable table =
+      detail::buildHalfEdgeTable(tri, detail::repeatedIndexFaces(tri));
   const auto& he = table.halfEdges;
   std::size_t boundaryCount = 0;
   for (const auto& [begin, end] : table.edges) boundaryCount += end - begin == 1 ? 1 : 0;
@@ -158,7 +154,7 @@ void checkVertexFans(const SurfaceMesh& mesh, Collector& out) {
   const Triangles& tri = mesh.triangles;
   std::vector<std::vector<int>> incident(static_cast<std::size_t>(mesh.vertices.rows()));
   for (int f = 0; f < static_cast<int>(tri.rows()); ++f) {
-    if (tri(f, 0) == tri(f, 1) || tri(f, 1) == tri(f, 2) || tri(f, 0) == tri(f, 2)) continue;
+    if (detail::repeatsAVertex(tri, f)) continue;
     for (int k = 0; k < 3; ++k) incident[tri(f, k)].push_back(f);
   }
   for (std::size_t v = 0; v < incident.size(); ++v) {

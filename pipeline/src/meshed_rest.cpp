@@ -39,29 +39,6 @@ SurfaceMesh closedSurface(const SurfaceMesh& oriented, const std::string& restNa
   return closed;
 }
 
-// Per vertex, whether it lies on a boundary edge (an edge of one face).
-std::vector<char> rimVertices(const SurfaceMesh& surface) {
-  std::vector<std::pair<int, int>> edges;
-  for (Eigen::Index f = 0; f < surface.triangles.rows(); ++f) {
-    for (int c = 0; c < 3; ++c) {
-      const int a = surface.triangles(f, c), b = surface.triangles(f, (c + 1) % 3);
-      edges.emplace_back(std::min(a, b), std::max(a, b));
-    }
-  }
-  std::sort(edges.begin(), edges.end());
-  std::vector<char> onRim(static_cast<std::size_t>(surface.vertices.rows()), 0);
-  for (std::size_t i = 0; i < edges.size();) {
-    std::size_t end = i + 1;
-    while (end < edges.size() && edges[end] == edges[i]) ++end;
-    if (end - i == 1) {
-      onRim[static_cast<std::size_t>(edges[i].first)] = 1;
-      onRim[static_cast<std::size_t>(edges[i].second)] = 1;
-    }
-    i = end;
-  }
-  return onRim;
-}
-
 // Two vertices on the rims of holes at the same position, the smallest such
 // pair of indices, or (-1, -1).
 std::pair<int, int> coincidentRimVertices(const SurfaceMesh& surface) {

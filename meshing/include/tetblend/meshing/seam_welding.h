@@ -39,6 +39,11 @@ struct SeamWelding {
 /// the lexicographic order of the positions.
 std::vector<int> positionIds(const Vertices& vertices);
 
+/// Per vertex of `surface` (indices in range), 1 where it lies on the rim of
+/// a hole: on an edge of exactly one face (faces that repeat a vertex do not
+/// count).
+std::vector<char> rimVertices(const SurfaceMesh& surface);
+
 /// Zips the seams of `surface` as described above. A surface with non-finite
 /// coordinates or a face index out of range, or one whose zipping would
 /// collapse a face, is returned as it is (nothing merged), for the
