@@ -18,7 +18,7 @@ import argparse
 import math
 import random
 
-from off_file import read_off_positions
+from off_file import read_off_positions, write_off
 
 
 def icosphere(levels):
@@ -85,12 +85,7 @@ def main():
             for i in range(n):
                 a = base + j * (n + 1) + i
                 faces += [(a, a + 1, a + n + 2), (a, a + n + 2, a + n + 1)]
-    with open(args.out, "w") as f:
-        f.write(f"OFF\n{len(vertices)} {len(faces)} 0\n")
-        for v in vertices:
-            f.write("%.17g %.17g %.17g\n" % v)
-        for a, b, c in faces:
-            f.write(f"3 {a} {b} {c}\n")
+    write_off(args.out, vertices, faces)
 
 
 if __name__ == "__main__":

@@ -14,7 +14,7 @@ import collections
 import os
 import random
 
-from off_file import read_off
+from off_file import read_off, write_off
 
 
 def charts_of(triangles, count, rng):
@@ -66,12 +66,7 @@ def main():
     name = os.path.splitext(os.path.basename(args.mesh))[0]
     os.makedirs(args.out_dir, exist_ok=True)
     out = os.path.join(args.out_dir, f"{name}_seams.off")
-    with open(out, "w") as f:
-        f.write(f"OFF\n{len(out_vertices)} {len(out_triangles)} 0\n")
-        for vertex in out_vertices:
-            f.write(" ".join(vertex) + "\n")
-        for a, b, c in out_triangles:
-            f.write(f"3 {a} {b} {c}\n")
+    write_off(out, out_vertices, out_triangles)
     print(f"{out}: {len(vertices)} -> {len(out_vertices)} vertices, {args.charts} charts")
 
 

@@ -26,3 +26,15 @@ def read_off_positions(path):
     """Vertex positions (float triples) and triangles of an ASCII OFF file."""
     rows, triangles = read_off(path)
     return [tuple(map(float, row)) for row in rows], triangles
+
+
+def write_off(path, vertices, triangles):
+    """Writes an ASCII OFF file: each vertex row's coordinates as given when
+    they are text (read_off's rows, written back exactly), else with 17
+    significant digits; the triangles as they are."""
+    def text(x):
+        return x if isinstance(x, str) else "%.17g" % x
+    with open(path, "w") as f:
+        f.write(f"OFF\n{len(vertices)} {len(triangles)} 0\n")
+        f.writelines(" ".join(text(x) for x in vertex) + "\n" for vertex in vertices)
+        f.writelines(f"3 {a} {b} {c}\n" for a, b, c in triangles)

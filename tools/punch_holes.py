@@ -17,7 +17,7 @@ import argparse
 import random
 from collections import defaultdict
 
-from off_file import read_off
+from off_file import read_off, write_off
 
 
 def faces_at(triangles):
@@ -100,10 +100,7 @@ def main():
             copy = len(rows) - 1
             kept = [tuple(copy if (i in fan and w == v) else w for w in tri) if i in fan else tri
                     for i, tri in enumerate(kept)]
-    with open(args.out, "w") as f:
-        f.write(f"OFF\n{len(rows)} {len(kept)} 0\n")
-        f.writelines(" ".join(row) + "\n" for row in rows)
-        f.writelines(f"3 {a} {b} {c}\n" for a, b, c in kept)
+    write_off(args.out, rows, kept)
     print(f"{args.out}: {len(triangles) - len(kept)} faces removed, "
           f"{len(corners)} touching corners{' split' if args.split_rims else ''}")
 
