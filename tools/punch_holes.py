@@ -69,7 +69,8 @@ def main():
     for k in range(args.holes):
         start = rng.randrange(len(triangles))
         hole = grown([start], triangles, at, args.rings)
-        if any(v in {w for f in removed for w in triangles[f]} for f in hole for v in triangles[f]):
+        removed_vertices = {w for f in removed for w in triangles[f]}
+        if any(v in removed_vertices for f in hole for v in triangles[f]):
             continue  # keep holes apart unless they are made to touch
         removed |= hole
         if k % 2 == 1:

@@ -141,6 +141,7 @@ SeamWelding withTouchingRimsJoined(SeamWelding welding, const std::vector<Surfac
   const SurfaceMesh& surface = welding.surface;
   if (!indicesInRange(surface) || !surface.vertices.allFinite()) return welding;
   const std::vector<char> onRim = rimVertices(surface);
+  if (std::find(onRim.begin(), onRim.end(), 1) == onRim.end()) return welding;  // closed
   // An input vertex of each row, to read the examples' positions there.
   std::vector<int> inputOf(onRim.size(), -1);
   for (std::size_t v = welding.rowOf.size(); v-- > 0;) {

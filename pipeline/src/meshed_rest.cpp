@@ -43,6 +43,7 @@ SurfaceMesh closedSurface(const SurfaceMesh& oriented, const std::string& restNa
 // pair of indices, or (-1, -1).
 std::pair<int, int> coincidentRimVertices(const SurfaceMesh& surface) {
   const std::vector<char> onRim = rimVertices(surface);
+  if (std::find(onRim.begin(), onRim.end(), 1) == onRim.end()) return {-1, -1};  // closed
   const std::vector<int> id = positionIds(surface.vertices);
   std::vector<int> firstAt(id.size(), -1);  // per position, its smallest rim vertex
   std::pair<int, int> smallest{-1, -1};
