@@ -106,13 +106,9 @@ Vertices extendedPositions(const Vertices& positions, const std::vector<Simplex>
   return result;
 }
 
-// Splits `simplices` in the rest mesh, relaxes the new vertices' rest
-// positions (relaxSteinerPoints; each example's own start at the centroids
-// stays) and extends every placed example.
+// Splits `simplices` in the rest mesh and extends every placed example.
 void split(const std::vector<Simplex>& simplices, CompatibleTetMeshes& meshes) {
-  const Eigen::Index firstNew = meshes.rest.vertices.rows();
   meshes.rest = splitSimplices(meshes.rest, simplices);
-  relaxSteinerPoints(meshes.rest, firstNew);
   for (CompatibleTetResult& example : meshes.examples) {
     example.vertices = extendedPositions(example.vertices, simplices);
   }

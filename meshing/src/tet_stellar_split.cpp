@@ -1,12 +1,9 @@
 #include "tet_stellar_split.h"
 
 #include <algorithm>
-#include <cmath>
-#include <limits>
 #include <string>
 
 #include "tetblend/core/error.h"
-#include "tetblend/core/tet_geometry.h"
 #include "tetblend/meshing/tet_boundary.h"
 
 namespace tetblend {
@@ -17,11 +14,6 @@ constexpr std::array<std::array<int, 2>, 6> kTetEdges = {
     {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}}};
 constexpr std::array<std::array<int, 3>, 4> kTetFaces = {
     {{1, 2, 3}, {0, 2, 3}, {0, 1, 3}, {0, 1, 2}}};
-
-// Sweeps of relaxSteinerPoints over the new vertices: each moves a vertex at
-// most to its neighbours' mean, so a few let neighbouring new vertices
-// follow each other.
-constexpr int kRelaxSweeps = 5;
 
 Simplex makeSimplex(std::initializer_list<int> vertices) {
   Simplex simplex;
@@ -198,57 +190,6 @@ TetMesh splitSimplices(const TetMesh& mesh, const std::vector<Simplex>& simplice
   result.tets.resize(static_cast<Eigen::Index>(tets.size()), 4);
   for (size_t t = 0; t < tets.size(); ++t) result.tets.row(static_cast<Eigen::Index>(t)) = tets[t];
   return result;
-}
-
-double tetShapeQuality(const Vertices& positions, const Eigen::RowVector4i& t) {
-  double squares = 0.0;
-  for (const auto& edge : kTetEdges) {
-    squares += (positions.row(t(edge[0])) - positions.row(t(edge[1]))).squaredNorm();
-  }
-  const double meanSquare = squares / 6.0;
-  return 6.0 * std::sqrt(2.0) * tetSignedVolume(positions, t) /
-         (meanSquare * std::sqrt(meanSquare));
-}
-
-void relaxSteinerPoints(TetMesh& mesh, Eigen::Index firstNew) {
-  const Eigen::Index count = mesh.vertices.rows() - firstNew;
-  if (count <= 0) return;
-  std::vector<std::vector<int>> star(static_cast<size_t>(count));
-  for (Eigen::Index t = 0; t < mesh.tets.rows(); ++t) {
-    for (int c = 0; c < 4; ++c) {
-      const Eigen::Index v = mesh.tets(t, c);
-      if (v >= firstNew) star[static_cast<size_t>(v - firstNew)].push_back(static_cast<int>(t));
-    }
-  }
-  const auto worstAround = [&](const std::vector<int>& tets) {
-    double worst = std::numeric_limits<double>::infinity();
-    for (int t : tets) worst = std::min(worst, tetShapeQuality(mesh.vertices, mesh.tets.row(t)));
-    return worst;
-  };
-  for (int sweep = 0; sweep < kRelaxSweeps; ++sweep) {
-    for (Eigen::Index i = 0; i < count; ++i) {
-      const Eigen::Index v = firstNew + i;
-      const std::vector<int>& tets = star[static_cast<size_t>(i)];
-      Eigen::RowVector3d mean = Eigen::RowVector3d::Zero();
-      int neighbours = 0;
-      for (int t : tets) {
-        for (int c = 0; c < 4; ++c) {
-          if (mesh.tets(t, c) == v) continue;
-          mean += mesh.vertices.row(mesh.tets(t, c));
-          ++neighbours;
-        }
-      }
-      if (neighbours == 0) continue;
-      mean /= neighbours;
-      const Eigen::RowVector3d start = mesh.vertices.row(v);
-      const double before = worstAround(tets);
-      for (const double step : {1.0, 0.5, 0.25}) {
-        mesh.vertices.row(v) = start + step * (mean - start);
-        if (worstAround(tets) > before) break;
-        mesh.vertices.row(v) = start;
-      }
-    }
-  }
 }
 
 }  // namespace tetblend

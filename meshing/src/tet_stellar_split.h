@@ -53,23 +53,4 @@ std::vector<Simplex> rigidSimplices(const TetMesh& mesh, int surfaceCount,
 /// appended. Throws InputError if a simplex is not in the mesh.
 TetMesh splitSimplices(const TetMesh& mesh, const std::vector<Simplex>& simplices);
 
-/// Shape quality of tet `t` in `positions`: 6√2 V / ℓ³ with ℓ² the mean
-/// squared edge length (the volume–length measure; 1 for a regular tet,
-/// near 0 for a sliver, negative when inverted).
-double tetShapeQuality(const Vertices& positions, const Eigen::RowVector4i& t);
-
-/// Moves the vertices from `firstNew` on (Steiner points that splitSimplices
-/// put at centroids) towards the mean of their neighbours, a step of 1, 1/2
-/// or 1/4 of the way, the first that raises the worst tetShapeQuality of
-/// the tets around the vertex, in kRelaxSweeps sweeps; a vertex stays put
-/// when none does. The tets stay positive. Why: a split of a rigid edge or
-/// face lying nearly in the surface (two faces of a flat patch) puts the
-/// new vertex nearly in the surface too, and its tets are slivers whose
-/// rest shape (volume 1e-6 of a regular tet's on CGAL's triceratops) makes
-/// each example's deformation gradient there huge and gives them almost no
-/// weight in the untangler's volume-weighted energy: 9 of 48 clean gallop
-/// frames of the triceratops kept such tets inverted (volume ratio −1000),
-/// 3 with the relaxation (−0.06 at worst).
-void relaxSteinerPoints(TetMesh& mesh, Eigen::Index firstNew);
-
 }  // namespace tetblend
