@@ -65,6 +65,12 @@ constexpr double kLeastRegionGrowth = 1.1;
 // (45 -> 78 to 90), before one refinement round let it succeed; the
 // hard-pose corpus keeps its counts.
 constexpr int kFailedAttemptsInARow = 2;
+// UntangleEffort::thickenedReference thickens rest tets whose edge matrix
+// has a singular value below this fraction of its largest
+// (thickenedTetElements). A regular tet's ratio is 1/2; TetGen's
+// radius-edge bound keeps slivers, and splits next to a triangle of nearly
+// zero area make more.
+constexpr double kThickenedSingularRatio = 0.05;
 
 // Runs body(i) for i in [0, count) on TBB's threads.
 template <typename Body>
@@ -124,7 +130,9 @@ struct CompatibleTetBuilder::Impl {
   // waiting thread stole the caller's outer task).
   tbb::collaborative_once_flag factorOnce;
   tbb::collaborative_once_flag trianglesOnce;
-  Triangles surfaceTriangles;  // boundary faces, on first use by propagatedRotations
+  tbb::collaborative_once_flag thickenedOnce;
+  std::vector<TetElement> thickenedElements;  // on first use by untangleInverted
+  Triangles surfaceTriangles;                 // boundary faces, on first use by propagatedRotations
   double diagonal = 0.0;
   double totalVolume = 0.0;  // Σ_t vol_t
   VertexStars stars;
@@ -201,9 +209,18 @@ struct CompatibleTetBuilder::Impl {
   // kLeastRegionGrowth: it then holds nearly every interior vertex the
   // inverted tets reach (the whole interior, or their part's in a rest of
   // several parts, where the ring count once doubled past the int range and
-  // retried one region forever). Returns the rounds performed. Keeps the
-  // attempt with the fewest inverted tets.
-  int untangleInverted(Vertices& positions, const UntangleEffort& effort) const {
+  // retried one region forever). The reference shapes are the rest's, or
+  // with effort.thickenedReference its slivers thickened
+  // (thickenedTetElements, made on first use). Returns the rounds performed.
+  // Keeps the attempt with the fewest inverted tets.
+  int untangleInverted(Vertices& positions, const UntangleEffort& effort) {
+    if (effort.thickenedReference) {
+      tbb::collaborative_call_once(thickenedOnce, [this] {
+        thickenedElements = thickenedTetElements(rest, elements, kThickenedSingularRatio);
+      });
+    }
+    const std::vector<TetElement>& reference =
+        effort.thickenedReference ? thickenedElements : elements;
     int rounds = 0;
     std::vector<int> inverted = invertedTets(positions, rest.tets);
     std::size_t lastRegion = 0;
@@ -217,7 +234,7 @@ struct CompatibleTetBuilder::Impl {
       if (!improved && !grew) break;
       Vertices current = positions;  // every attempt starts from the best state
       if (!region.empty()) {
-        rounds += untangle(rest.tets, elements, region, effort, current).rounds;
+        rounds += untangle(rest.tets, reference, region, effort, current).rounds;
       }
       std::vector<int> now = invertedTets(current, rest.tets);
       improved = now.size() < inverted.size();
@@ -454,7 +471,7 @@ CompatibleTetResult CompatibleTetBuilder::place(const Vertices& exampleSurface) 
 
 CompatibleTetResult CompatibleTetBuilder::repair(const Vertices& start,
                                                  const UntangleEffort& effort) const {
-  const Impl& m = *impl_;
+  Impl& m = *impl_;
   m.requireExampleSurface(start, m.rest.vertices.rows());
   CompatibleTetResult result;
   result.vertices = start;

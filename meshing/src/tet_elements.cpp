@@ -10,6 +10,20 @@
 
 namespace tetblend {
 
+namespace {
+
+// The element of the tet with edge matrix `edges` (positive determinant).
+TetElement elementOf(const Eigen::Matrix3d& edges) {
+  const Eigen::Matrix3d inverse = edges.inverse();  // rows: gradients of λ1..λ3
+  TetElement element;
+  element.volume = edges.determinant() / 6.0;
+  element.gradients.rightCols<3>() = inverse.transpose();
+  element.gradients.col(0) = -inverse.transpose().rowwise().sum();
+  return element;
+}
+
+}  // namespace
+
 std::vector<TetElement> buildTetElements(const TetMesh& mesh) {
   const Eigen::Index vertexCount = mesh.vertices.rows();
   std::vector<TetElement> elements(static_cast<size_t>(mesh.tets.rows()));
@@ -26,13 +40,26 @@ std::vector<TetElement> buildTetElements(const TetMesh& mesh) {
                        std::to_string(volume) +
                        "; the rest mesh must be positively oriented and non-degenerate");
     }
-    const Eigen::Matrix3d inverse = edges.inverse();  // rows: gradients of λ1..λ3
-    TetElement& element = elements[static_cast<size_t>(t)];
-    element.volume = volume;
-    element.gradients.rightCols<3>() = inverse.transpose();
-    element.gradients.col(0) = -inverse.transpose().rowwise().sum();
+    elements[static_cast<size_t>(t)] = elementOf(edges);
   }
   return elements;
+}
+
+std::vector<TetElement> thickenedTetElements(const TetMesh& mesh,
+                                             const std::vector<TetElement>& elements,
+                                             double minSingularRatio) {
+  std::vector<TetElement> thickened = elements;
+  for (Eigen::Index t = 0; t < mesh.tets.rows(); ++t) {
+    const Eigen::Matrix3d edges = tetEdgeMatrix(mesh.vertices, mesh.tets.row(t));
+    const Eigen::JacobiSVD<Eigen::Matrix3d> svd(edges, Eigen::ComputeFullU | Eigen::ComputeFullV);
+    const Eigen::Vector3d sigma = svd.singularValues();  // descending
+    const double least = minSingularRatio * sigma(0);
+    if (sigma(2) >= least) continue;
+    // det U det V = +1 since det D > 0, so the thickened D stays positive.
+    thickened[static_cast<size_t>(t)] =
+        elementOf(svd.matrixU() * sigma.cwiseMax(least).asDiagonal() * svd.matrixV().transpose());
+  }
+  return thickened;
 }
 
 Eigen::Matrix3d closestRotation(const Eigen::Matrix3d& f) {

@@ -21,10 +21,22 @@ struct TetElement {
 /// whose rest volume is not positive or whose index is out of range.
 std::vector<TetElement> buildTetElements(const TetMesh& mesh);
 
+/// `elements` of `mesh` with every sliver thickened, for the untangler's
+/// second attempt (compatible_tets.cpp): a tet whose edge matrix
+/// D = [x1-x0, x2-x0, x3-x0] has singular values below minSingularRatio
+/// times its largest gets those raised to that bound (D = U Σ Vᵀ → U Σ' Vᵀ),
+/// its gradients and volume from the thickened D; the others are copied.
+/// Only the sign of det F decides validity, and it is the same for any
+/// positive reference shape; the thickened one keeps det F of a sliver
+/// whose example is slightly inverted small, where the rest's own makes it
+/// about −1/(the sliver's relative height).
+std::vector<TetElement> thickenedTetElements(const TetMesh& mesh,
+                                             const std::vector<TetElement>& elements,
+                                             double minSingularRatio);
+
 /// Deformation gradient of tet `t` under `positions` (#V by 3). Inline: the
 /// untangling and ARAP loops call it for every tet of every evaluation.
-inline Eigen::Matrix3d deformationGradient(const Vertices& positions,
-                                           const Eigen::RowVector4i& tet,
+inline Eigen::Matrix3d deformationGradient(const Vertices& positions, const Eigen::RowVector4i& tet,
                                            const TetElement& element) {
   Eigen::Matrix<double, 3, 4> corners;
   for (int a = 0; a < 4; ++a) corners.col(a) = positions.row(tet(a)).transpose();

@@ -62,6 +62,12 @@ struct UntangleEffort {
   /// itself: 1e-3 (bench_meshing's 1 M hard bar crept up by less for 40
   /// rounds, 16 s, to end with 3 times the inverted tets it started with).
   double minDetProgress = 0.0;
+  /// Measure distortion against the rest's tets with their slivers thickened
+  /// (compatible_tets.cpp) instead of the rest's own shapes. Validity is the
+  /// same either way (the sign of det F); a sliver's own shape makes det F
+  /// of a slightly inverted example tet about −1 / (its relative height),
+  /// where the untangler gives up.
+  bool thickenedReference = false;
 };
 
 /// Options of CompatibleTetBuilder, with their defaults.
