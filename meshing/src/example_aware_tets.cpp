@@ -71,7 +71,8 @@ void forEachExample(std::size_t count, std::size_t concurrency, const Body& body
                              tbb::make_filter<std::size_t, void>(tbb::filter_mode::parallel, body));
 }
 
-void sortUnique(std::vector<int>& values) {
+template <typename T>
+void sortUnique(std::vector<T>& values) {
   std::sort(values.begin(), values.end());
   values.erase(std::unique(values.begin(), values.end()), values.end());
 }
@@ -106,14 +107,47 @@ Vertices extendedPositions(const Vertices& positions, const std::vector<Simplex>
   return result;
 }
 
-// Splits `simplices` in the rest mesh and extends every placed example.
-void split(const std::vector<Simplex>& simplices, CompatibleTetMeshes& meshes) {
-  meshes.rest = splitSimplices(meshes.rest, simplices);
+// The positions in `simplices` of those whose new vertex (index
+// firstNew + position, splitSimplices' order) lies in a tet of `refined`
+// whose signed volume is not positive in floating point.
+std::vector<std::size_t> splitsLeavingFlatTets(const TetMesh& refined, Eigen::Index firstNew) {
+  std::vector<std::size_t> flat;
+  for (Eigen::Index t = 0; t < refined.tets.rows(); ++t) {
+    if (tetSignedVolume(refined.vertices, refined.tets.row(t)) > 0.0) continue;
+    for (int c = 0; c < 4; ++c) {
+      if (refined.tets(t, c) >= firstNew) {
+        flat.push_back(static_cast<std::size_t>(refined.tets(t, c) - firstNew));
+      }
+    }
+  }
+  return flat;
+}
+
+// Splits `simplices` in the rest mesh and extends every placed example;
+// false when none could be split. A split halves a tet's volume exactly
+// only in exact arithmetic: a sliver of the rest (a triangle of nearly zero
+// area and its tet) can round to a child of volume 0 or below, which no
+// later step accepts (a 16-frame elephant with such triangles was refused),
+// so the simplices whose split does that are left out, and the rest split.
+bool split(std::vector<Simplex> simplices, CompatibleTetMeshes& meshes) {
+  const Eigen::Index firstNew = meshes.rest.vertices.rows();
+  TetMesh refined = splitSimplices(meshes.rest, simplices);
+  for (std::vector<std::size_t> flat = splitsLeavingFlatTets(refined, firstNew); !flat.empty();
+       flat = splitsLeavingFlatTets(refined, firstNew)) {
+    sortUnique(flat);
+    for (auto i = flat.rbegin(); i != flat.rend(); ++i) {
+      simplices.erase(simplices.begin() + static_cast<std::ptrdiff_t>(*i));
+    }
+    if (simplices.empty()) return false;
+    refined = splitSimplices(meshes.rest, simplices);
+  }
+  meshes.rest = std::move(refined);
   for (CompatibleTetResult& example : meshes.examples) {
     example.vertices = extendedPositions(example.vertices, simplices);
   }
   meshes.steinerPoints += static_cast<int>(simplices.size());
   ++meshes.rounds;
+  return true;
 }
 
 // Per vertex of `mesh`, its tet component (tets linked through shared
@@ -312,8 +346,7 @@ CompatibleTetMeshes buildCompatibleTetMeshes(const TetMesh& rest, int surfaceVer
                             vertexComponent, meshes.selfIntersections);
   if (!outside.empty() && options.maxRounds > 0) {
     meshes.rigidSimplicesOutside = static_cast<int>(outside.size());
-    split(outside, meshes);
-    report("refine");
+    if (split(outside, meshes)) report("refine");
   }
   for (int round = 0; round < options.maxRounds; ++round) {
     std::vector<int> bad;
@@ -326,8 +359,8 @@ CompatibleTetMeshes buildCompatibleTetMeshes(const TetMesh& rest, int surfaceVer
     const std::vector<Simplex> simplices =
         simplicesFreeing(meshes.rest, bad, surfaceVertexCount, boundary);
     if (simplices.empty()) break;
+    if (!split(simplices, meshes)) break;
     meshes.allSurfaceTetsInverted += static_cast<int>(bad.size());
-    split(simplices, meshes);
     report("refine");
   }
 
@@ -405,7 +438,7 @@ CompatibleTetMeshes buildCompatibleTetMeshes(const TetMesh& rest, int surfaceVer
           meshes.rest, meshes.examples[k].invertedTets, surfaceVertexCount, boundary);
       if (simplices.empty()) break;
       if (sinceBest == 0) bestMeshes = meshes;
-      split(simplices, meshes);
+      if (!split(simplices, meshes)) break;
       ++rounds;
       const CompatibleTetBuilder refined(meshes.rest, surfaceVertexCount, placement);
       untangleAgain(refined, options.placement.untangleEffort, meshes.examples[k]);
