@@ -1,6 +1,7 @@
 #include "tetblend/meshing/degenerate_faces.h"
 
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <cstdint>
 #include <unordered_map>
 #include <vector>
@@ -52,7 +53,8 @@ class EdgeFaces {
 
 }  // namespace
 
-DegenerateFaceFlips flipDegenerateFaces(SurfaceMesh& mesh, double zeroAreaRelTol) {
+DegenerateFaceFlips flipDegenerateFaces(SurfaceMesh& mesh, double zeroAreaRelTol,
+                                        double capRelHeight) {
   const Vertices& x = mesh.vertices;
   const double diagonal = boundingBoxDiagonal(x);
   const double minArea = zeroAreaRelTol * diagonal * diagonal;
@@ -61,8 +63,17 @@ DegenerateFaceFlips flipDegenerateFaces(SurfaceMesh& mesh, double zeroAreaRelTol
     const Eigen::Vector3d ac = (x.row(c) - x.row(a)).transpose();
     return 0.5 * ab.cross(ac).norm();
   };
+  // Zero area, or 2 area / longest edge² (the relative height of the vertex
+  // opposite the longest edge) below capRelHeight.
+  const auto flat = [&](int a, int b, int c) {
+    const double twiceArea = 2.0 * area(a, b, c);
+    const double longest =
+        std::max({(x.row(a) - x.row(b)).squaredNorm(), (x.row(b) - x.row(c)).squaredNorm(),
+                  (x.row(c) - x.row(a)).squaredNorm()});
+    return twiceArea < 2.0 * minArea || twiceArea < capRelHeight * longest;
+  };
   const auto degenerate = [&](const Eigen::RowVector3i& t) {
-    return t(0) != t(1) && t(1) != t(2) && t(0) != t(2) && area(t(0), t(1), t(2)) < minArea;
+    return t(0) != t(1) && t(1) != t(2) && t(0) != t(2) && flat(t(0), t(1), t(2));
   };
   std::vector<int> pending;
   for (Eigen::Index f = mesh.triangles.rows() - 1; f >= 0; --f) {
@@ -95,8 +106,8 @@ DegenerateFaceFlips flipDegenerateFaces(SurfaceMesh& mesh, double zeroAreaRelTol
           if (corner != u && corner != v) d = corner;
         }
       }
-      if (d < 0 || d == c || edges.face(c, d) >= 0 || edges.face(d, c) >= 0 ||
-          area(u, d, c) < minArea || area(d, v, c) < minArea) {
+      if (d < 0 || d == c || edges.face(c, d) >= 0 || edges.face(d, c) >= 0 || flat(u, d, c) ||
+          flat(d, v, c)) {
         stuck.push_back(f);
         continue;
       }
