@@ -109,11 +109,15 @@ Vertices extendedPositions(const Vertices& positions, const std::vector<Simplex>
 
 // The positions in `simplices` of those whose new vertex (index
 // firstNew + position, splitSimplices' order) lies in a tet of `refined`
-// whose signed volume is not positive in floating point.
+// whose signed volume is not positive in floating point. Only tets with a
+// new vertex changed; the others keep their positive volume.
 std::vector<std::size_t> splitsLeavingFlatTets(const TetMesh& refined, Eigen::Index firstNew) {
   std::vector<std::size_t> flat;
   for (Eigen::Index t = 0; t < refined.tets.rows(); ++t) {
-    if (tetSignedVolume(refined.vertices, refined.tets.row(t)) > 0.0) continue;
+    if (refined.tets.row(t).maxCoeff() < firstNew ||
+        tetSignedVolume(refined.vertices, refined.tets.row(t)) > 0.0) {
+      continue;
+    }
     for (int c = 0; c < 4; ++c) {
       if (refined.tets(t, c) >= firstNew) {
         flat.push_back(static_cast<std::size_t>(refined.tets(t, c) - firstNew));
@@ -265,11 +269,12 @@ const UntangleEffort& effortFor(const SelfIntersections& found,
 }
 
 // `effort` measuring distortion against thickened slivers: a clean example's
-// last attempt (UntangleEffort::thickenedReference). Splits next to a rest
-// triangle of nearly zero area leave slivers (volume 1e-6 of a regular tet
-// on CGAL's triceratops) whose det F in a frame was about −1000. 48
-// gallop-like frames of the triceratops (40°), clean frames keeping
-// inverted tets: 9 without it, 2 with it. Thickening in every attempt
+// last attempt (UntangleEffort::thickenedReference). Rest slivers (volume
+// 1e-6 of a regular tet's on CGAL's triceratops) made det F in a frame
+// about −1000. 48 gallop-like frames (40°), clean frames keeping inverted
+// tets, without it and with it: triceratops 9 and 2, lion 4 and 3 (the
+// triceratops' slivers sat on two caps, which degenerate_faces.h now
+// re-splits for meshing, so it keeps none either way). Thickening in every attempt
 // instead of the last also gave 2, but left CGAL's dino 3 tets in its 720°
 // twist; every clean example's attempts thickened after the usual ones
 // gave 2 too, but CGAL's lion's gallop frames took 961 s instead of 118 s
