@@ -28,8 +28,9 @@ build() { # build <dir> <cmake args...>
 asan_configure() {
   # -g1: line tables only, enough for the sanitizers' stack traces (file and
   # line of every frame); full debug info made the build about 20 % longer.
-  # -O1, the level the ASan documentation suggests: kaji_ochiai_test.cpp
-  # built in 162 s instead of 215 s at -O2.
+  # -O1, the level the ASan documentation suggests: kaji_ochiai_test.cpp,
+  # when it still instantiated Eigen's MatrixFunctions itself, built in 162 s
+  # instead of 215 s at -O2.
   cmake -S . -B build/asan -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DTETBLEND_SANITIZE=ON \
     -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" \
     -DTETBLEND_BUILD_BENCHMARKS=OFF -DTETBLEND_BUILD_PYTHON=OFF
