@@ -12,7 +12,10 @@
 #include <vector>
 
 #include "half_edge_table.h"
+#include "hole_fill_folds.h"
+#include "hole_refill.h"
 #include "tetblend/core/error.h"
+#include "tetblend/meshing/self_intersection.h"
 #include "tetblend/meshing/surface_validation.h"
 
 namespace tetblend {
@@ -29,14 +32,6 @@ bool indicesInRange(const SurfaceMesh& surface) {
   }
   return true;
 }
-
-// The hole's side of a boundary edge: it runs from -> to, and `face` (which
-// runs to -> from) is on the other side.
-struct Border {
-  int from;
-  int to;
-  int face;
-};
 
 // The borders of every boundary edge (edge of one face); faces with a
 // repeated index are skipped (validateSurface reports them).
@@ -186,8 +181,8 @@ std::vector<HoleLoop> holeLoops(const std::vector<Border>& borders,
   return loops;
 }
 
-Kernel::Point_3 pointOf(const SurfaceMesh& surface, int i) {
-  return Kernel::Point_3(surface.vertices(i, 0), surface.vertices(i, 1), surface.vertices(i, 2));
+Kernel::Point_3 pointAt(const Vertices& positions, int i) {
+  return Kernel::Point_3(positions(i, 0), positions(i, 1), positions(i, 2));
 }
 
 // The surface as a CGAL halfedge mesh, vertex i and face f keeping their
@@ -201,11 +196,11 @@ Mesh halfedgeMesh(const SurfaceMesh& surface, const std::map<int, std::map<int, 
                static_cast<Mesh::size_type>(3 * surface.triangles.rows()),
                static_cast<Mesh::size_type>(surface.triangles.rows()));
   for (Eigen::Index i = 0; i < surface.vertices.rows(); ++i) {
-    mesh.add_vertex(pointOf(surface, static_cast<int>(i)));
+    mesh.add_vertex(pointAt(surface.vertices, static_cast<int>(i)));
   }
   std::map<int, Mesh::Vertex_index> secondFan;
   for (const auto& entry : pinched)
-    secondFan[entry.first] = mesh.add_vertex(pointOf(surface, entry.first));
+    secondFan[entry.first] = mesh.add_vertex(pointAt(surface.vertices, entry.first));
   for (Eigen::Index f = 0; f < surface.triangles.rows(); ++f) {
     std::array<Mesh::Vertex_index, 3> corners;
     for (int c = 0; c < 3; ++c) {
@@ -229,55 +224,41 @@ InputError noTriangulation(const std::string& name, std::size_t size, int vertex
                     "own edges; close it yourself, or use the per-face tetrisation");
 }
 
-// Closes a hole by CGAL's triangulation of its boundary polyline: for holes
-// through a pinched vertex, which the halfedge mesh cannot follow. The third
-// point of each boundary edge (its face's other corner) steers the fill
-// away from folding over the surface, as triangulate_hole does. Appends
-// triangles oriented like the surface.
-void fillAlongPolyline(const SurfaceMesh& surface, const std::vector<Border>& borders,
-                       const HoleLoop& loop, const std::string& name,
-                       std::vector<std::array<int, 3>>& triangles) {
-  std::vector<int> corner;
-  std::vector<Kernel::Point_3> points, third;
-  for (const int b : loop.borders) {
-    const Border& border = borders[static_cast<std::size_t>(b)];
-    corner.push_back(border.from);
-    points.push_back(pointOf(surface, border.from));
-    int other = 0;
-    for (int c = 0; c < 3; ++c) {
-      const int v = surface.triangles(border.face, c);
-      if (v != border.from && v != border.to) other = v;
-    }
-    third.push_back(pointOf(surface, other));
+// Whether two of `triangles` (at `positions`) intersect.
+bool cutsItself(const Vertices& positions, const FillTriangles& triangles) {
+  Triangles rows(static_cast<Eigen::Index>(triangles.size()), 3);
+  for (std::size_t i = 0; i < triangles.size(); ++i) {
+    for (int c = 0; c < 3; ++c) rows(static_cast<Eigen::Index>(i), c) = triangles[i][c];
   }
-  std::vector<CGAL::Triple<int, int, int>> patch;
-  CGAL::Polygon_mesh_processing::triangulate_hole_polyline(points, third,
-                                                           std::back_inserter(patch));
-  if (patch.empty()) throw noTriangulation(name, loop.borders.size(), corner.front());
-  // The border runs corner 0 -> corner 1, so the fill's triangle at that
-  // edge must too; CGAL orients its patch consistently.
-  bool reversed = false;
-  for (const auto& t : patch) {
-    const std::array<int, 3> c{t.first, t.second, t.third};
-    for (int k = 0; k < 3; ++k) {
-      if (c[k] == 1 && c[(k + 1) % 3] == 0) reversed = true;
-    }
-  }
-  for (const auto& t : patch) {
-    std::array<int, 3> v{corner[static_cast<std::size_t>(t.first)],
-                         corner[static_cast<std::size_t>(t.second)],
-                         corner[static_cast<std::size_t>(t.third)]};
+  return findSelfIntersections(positions, rows, 1).pairCount > 0;
+}
+
+// The boundary edges of `loop`, in order.
+std::vector<Border> rimOf(const std::vector<Border>& borders, const HoleLoop& loop) {
+  std::vector<Border> rim;
+  for (const int b : loop.borders) rim.push_back(borders[static_cast<std::size_t>(b)]);
+  return rim;
+}
+
+// Closes a hole through a pinched vertex, which the halfedge mesh cannot
+// follow, by polylineFill at the rest.
+FillTriangles fillAlongPolyline(const SurfaceMesh& surface, const std::vector<Border>& borders,
+                                const HoleLoop& loop, const std::string& name) {
+  const FillTriangles fill = polylineFill(surface, surface.vertices, rimOf(borders, loop));
+  const int first = borders[static_cast<std::size_t>(loop.borders.front())].from;
+  if (fill.empty()) throw noTriangulation(name, loop.borders.size(), first);
+  for (const std::array<int, 3>& v : fill) {
     if (v[0] == v[1] || v[1] == v[2] || v[0] == v[2]) {
       throw touchingHolesError(name, v[0] == v[1] || v[0] == v[2] ? v[0] : v[1], 4);
     }
-    if (reversed) std::swap(v[1], v[2]);
-    triangles.push_back(v);
   }
+  return fill;
 }
 
 }  // namespace
 
-HoleFilling fillHoles(const SurfaceMesh& surface, const std::string& sourceName) {
+HoleFilling fillHoles(const SurfaceMesh& surface, const std::string& sourceName,
+                      const std::vector<Vertices>& poses) {
   SurfaceValidationOptions openSurface;
   openSurface.requireClosed = false;
   openSurface.checkSelfIntersections = false;
@@ -302,11 +283,21 @@ HoleFilling fillHoles(const SurfaceMesh& surface, const std::string& sourceName)
   const std::vector<HoleLoop> loops =
       holeLoops(borders, pinched, surface.vertices.rows(), sourceName);
   Mesh mesh = halfedgeMesh(surface, pinched, sourceName);
-  std::vector<std::array<int, 3>> triangles;
+  for (std::size_t k = 0; k < poses.size(); ++k) {
+    if (poses[k].rows() != surface.vertices.rows() || !poses[k].allFinite()) {
+      throw InputError(sourceName + ": pose " + std::to_string(k + 1) + " has " +
+                       std::to_string(poses[k].rows()) + " vertex positions (need " +
+                       std::to_string(surface.vertices.rows()) + ", all finite)");
+    }
+  }
+  // The rest's own fills, and the ones chosen for the poses as well.
+  FillTriangles restTriangles, triangles;
   for (const HoleLoop& loop : loops) {
     ++result.holeCount;
     if (loop.pinched) {
-      fillAlongPolyline(surface, borders, loop, sourceName, triangles);
+      const FillTriangles fill = fillAlongPolyline(surface, borders, loop, sourceName);
+      restTriangles.insert(restTriangles.end(), fill.begin(), fill.end());
+      triangles.insert(triangles.end(), fill.begin(), fill.end());
       continue;
     }
     const Border& first = borders[static_cast<std::size_t>(loop.borders.front())];
@@ -315,14 +306,24 @@ HoleFilling fillHoles(const SurfaceMesh& surface, const std::string& sourceName)
     std::vector<Mesh::Face_index> added;
     CGAL::Polygon_mesh_processing::triangulate_hole(mesh, border, std::back_inserter(added));
     if (added.empty()) throw noTriangulation(sourceName, loop.borders.size(), first.from);
+    FillTriangles fill;
     for (const Mesh::Face_index face : added) {
       std::array<int, 3> corners{};
       int k = 0;
       for (const Mesh::Vertex_index v : mesh.vertices_around_face(mesh.halfedge(face))) {
         corners[static_cast<std::size_t>(k++)] = static_cast<int>(v.idx());
       }
-      triangles.push_back(corners);
+      fill.push_back(corners);
     }
+    restTriangles.insert(restTriangles.end(), fill.begin(), fill.end());
+    if (!poses.empty())
+      fill = leastFoldingFill(std::move(fill), surface, poses, rimOf(borders, loop));
+    triangles.insert(triangles.end(), fill.begin(), fill.end());
+  }
+  // Each fill chosen for the poses cuts no face of the surface; should two
+  // holes' fills cut each other, the rest's own fills are kept.
+  if (triangles != restTriangles && cutsItself(surface.vertices, triangles)) {
+    triangles = restTriangles;
   }
   result.triangles.resize(static_cast<Eigen::Index>(triangles.size()), 3);
   for (std::size_t i = 0; i < triangles.size(); ++i) {

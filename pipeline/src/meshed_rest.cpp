@@ -28,11 +28,12 @@ void orientWherePossible(SurfaceMesh& mesh) {
 }
 
 // The user's faces, then the triangles that close its holes (none with
-// options.fillHoles off).
+// options.fillHoles off), chosen to fold little in `examples` as well.
 SurfaceMesh closedSurface(const SurfaceMesh& oriented, const std::string& restName,
-                          const PrepareOptions& options, HoleFilling& filling) {
+                          const PrepareOptions& options, const std::vector<Vertices>& examples,
+                          HoleFilling& filling) {
   if (!options.fillHoles) return oriented;
-  filling = fillHoles(oriented, restName);
+  filling = fillHoles(oriented, restName, examples);
   SurfaceMesh closed{oriented.vertices,
                      Triangles(oriented.triangles.rows() + filling.triangles.rows(), 3)};
   closed.triangles << oriented.triangles, filling.triangles;
@@ -250,7 +251,7 @@ MeshedRest meshedRest(const SurfaceMesh& rest, const std::string& restName,
   SurfaceMesh oriented = rest;
   orientWherePossible(oriented);
   if (options.fillHoles) refuseTouchingRims(oriented, restName);
-  meshed.surface = closedSurface(oriented, restName, options, meshed.filling);
+  meshed.surface = closedSurface(oriented, restName, options, examples, meshed.filling);
   orientWherePossible(meshed.surface);
   meshed.nestedSolids = markNestedSolids(meshed, rest.triangles);
   const Eigen::Index userFaces = rest.triangles.rows();

@@ -8,6 +8,7 @@
 // of the 3D Delaunay triangulation of the hole's boundary first.
 
 #include <string>
+#include <vector>
 
 #include "tetblend/core/mesh_types.h"
 
@@ -38,6 +39,15 @@ struct HoleFilling {
 /// self-intersection checks) if there is one, and naming the hole if CGAL
 /// finds no triangulation of it. Whether the fill intersects the surface is
 /// not checked here (validate the closed surface).
-HoleFilling fillHoles(const SurfaceMesh& surface, const std::string& sourceName);
+///
+/// `poses` (positions of the surface's vertices in the examples, which
+/// share the fill) steer each hole's fill away from folding: where the
+/// rest's fill turns by more than 90° across one of its edges in some pose,
+/// CGAL's fill of the hole in that pose replaces it if it folds less over
+/// the rest and all poses and cuts no face at the rest (hole_refill.h).
+/// Holes through a pinched vertex keep the rest's fill. Throws InputError
+/// if a pose has another vertex count or a non-finite position.
+HoleFilling fillHoles(const SurfaceMesh& surface, const std::string& sourceName,
+                      const std::vector<Vertices>& poses = {});
 
 }  // namespace tetblend
