@@ -1,7 +1,6 @@
 // A CGAL translation unit (see meshing/CMakeLists.txt): CGAL stays inside.
 #include "tetblend/meshing/hole_filling.h"
 
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_hole.h>
 #include <CGAL/Surface_mesh.h>
 
@@ -11,6 +10,7 @@
 #include <map>
 #include <vector>
 
+#include "cgal_points.h"
 #include "half_edge_table.h"
 #include "hole_fill_folds.h"
 #include "hole_refill.h"
@@ -21,7 +21,8 @@
 namespace tetblend {
 namespace {
 
-using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using detail::Kernel;
+using detail::pointAt;
 using Mesh = CGAL::Surface_mesh<Kernel::Point_3>;
 
 bool indicesInRange(const SurfaceMesh& surface) {
@@ -179,10 +180,6 @@ std::vector<HoleLoop> holeLoops(const std::vector<Border>& borders,
     loops.push_back(std::move(loop));
   }
   return loops;
-}
-
-Kernel::Point_3 pointAt(const Vertices& positions, int i) {
-  return Kernel::Point_3(positions(i, 0), positions(i, 1), positions(i, 2));
 }
 
 // The surface as a CGAL halfedge mesh, vertex i and face f keeping their

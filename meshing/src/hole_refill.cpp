@@ -1,7 +1,6 @@
 // A CGAL translation unit (see meshing/CMakeLists.txt): CGAL stays inside.
 #include "hole_refill.h"
 
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_hole.h>
 
 #include <algorithm>
@@ -12,13 +11,15 @@
 #include <set>
 #include <utility>
 
+#include "cgal_points.h"
 #include "tetblend/core/constants.h"
 #include "tetblend/meshing/self_intersection.h"
 
 namespace tetblend {
 namespace {
 
-using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using detail::Kernel;
+using detail::pointAt;
 
 // A fill folding at most this much in every pose is kept: each of its edges
 // then leaves the solid a dihedral angle of at least 90° (as at a box's
@@ -34,10 +35,6 @@ constexpr double kHarmlessFold = kPi / 2;
 // frames that no longer intersect themselves kept tets inverted (3 before)
 // and preparing took 328 s instead of 83 s.
 constexpr int kMaxRefills = 3;
-
-Kernel::Point_3 pointAt(const Vertices& positions, int i) {
-  return Kernel::Point_3(positions(i, 0), positions(i, 1), positions(i, 2));
-}
 
 std::pair<int, int> undirected(int a, int b) { return {std::min(a, b), std::max(a, b)}; }
 

@@ -44,7 +44,8 @@ struct HoleFilling {
 /// share the fill) steer each hole's fill away from folding: where the
 /// rest's fill turns by more than 90° across one of its edges in some pose,
 /// CGAL's fill of the hole in that pose replaces it if it folds less over
-/// the rest and all poses and cuts no face at the rest (hole_refill.h).
+/// the rest and all poses, cuts no face at the rest and cuts the surface in
+/// no more poses (hole_refill.h).
 /// Holes through a pinched vertex keep the rest's fill. Throws InputError
 /// if a pose has another vertex count or a non-finite position.
 HoleFilling fillHoles(const SurfaceMesh& surface, const std::string& sourceName,
