@@ -24,6 +24,7 @@
 
 #include "interior_stiffness.h"
 #include "tet_elements.h"
+#include "tetblend/core/blas_threads.h"
 #include "tetblend/core/error.h"
 #include "tetblend/core/memory_preflight.h"
 #include "tetblend/core/openmp_teams.h"
@@ -152,6 +153,9 @@ struct CompatibleTetBuilder::Impl {
                 " interior vertices)");
         letOpenMpShrinkTeams();
 #endif
+        // Every other placement waits for this factorisation: OpenBLAS may
+        // use its thread team for it even inside buildCompatibleTetMeshes.
+        const ParallelBlas parallelBlas;
         solver.factorize(blocks.interiorLower);
         if (solver.info() != Eigen::Success) {
           throw NumericalError(

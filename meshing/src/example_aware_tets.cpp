@@ -15,6 +15,7 @@
 #include "half_edge_table.h"
 #include "surface_interior.h"
 #include "tet_stellar_split.h"
+#include "tetblend/core/blas_threads.h"
 #include "tetblend/core/error.h"
 #include "tetblend/core/tet_geometry.h"
 #include "tetblend/meshing/self_intersection.h"
@@ -328,6 +329,9 @@ CompatibleTetMeshes buildCompatibleTetMeshes(const TetMesh& rest, int surfaceVer
                        std::to_string(surfaceVertexCount) + ", all finite)");
     }
   }
+  // Examples are placed one per core: OpenBLAS's thread team would only
+  // spin beside them (blas_threads.h).
+  const SerialBlas serialBlas;
   std::mutex progressMutex;  // examples may be placed on several threads
   auto report = [&](const char* stage) {
     if (!progress) return;
