@@ -40,7 +40,7 @@ class SelfIntersectingRest : public ::testing::Test {
     const fs::path meshes = testing_cgal::extractCgalMeshes(tarball, {"cow.off"}, "cowrest");
     ASSERT_FALSE(meshes.empty());
     rest_ = readSurface((meshes / "cow.off").string());
-    fs::remove_all(meshes / ".." / "..");
+    fs::remove_all(meshes.parent_path().parent_path());
     ASSERT_GT(findSelfIntersections(rest_.vertices, rest_.triangles, 1).pairCount, 0u);
     // Two poses: a 60° twist and a 40° bend along the body (x).
     const Eigen::Vector3d lo = rest_.vertices.colwise().minCoeff().transpose();

@@ -32,7 +32,8 @@ inline const char* kMissingCgalDemo =
 /// Extracts data/meshes/<name> for each of `names` (e.g. "elephant.off")
 /// into a new folder under the temporary directory, named after `tag`, and
 /// returns the folder holding them ("" if tar failed). The caller removes
-/// the folder's parent (meshFolder / "../..") when done.
+/// the folder two levels up (meshFolder.parent_path().parent_path()) when
+/// done: remove_all of a path ending in ".." leaves the folder behind.
 inline std::filesystem::path extractCgalMeshes(const std::string& tarball,
                                                const std::vector<std::string>& names,
                                                const std::string& tag) {

@@ -129,7 +129,7 @@ TEST(SurfaceSeparation, SelfIntersectingCgalDemoMeshesAreSeparated) {
     EXPECT_EQ(intersectingPairs(separated->vertices, surface.triangles), 0u) << name;
     EXPECT_TRUE(validateSurface({separated->vertices, surface.triangles}, name).ok()) << name;
   }
-  std::filesystem::remove_all(meshes / ".." / "..");
+  std::filesystem::remove_all(meshes.parent_path().parent_path());
 }
 
 }  // namespace
