@@ -2,12 +2,16 @@
 
 #include <errno.h>
 #include <fcntl.h>
+#include <poll.h>
 #include <pthread.h>
+#include <signal.h>
 #include <stdio_ext.h>
 #include <sys/types.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <chrono>
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
@@ -25,6 +29,8 @@ constexpr std::size_t kChildStackBytes = std::size_t{256} << 20;
 // Child report: header, then #P*3 doubles and #T*corners ints.
 constexpr std::int32_t kReportOk = 0;
 constexpr std::int32_t kReportTetGenError = 1;
+// Longer limits are this one (a year: no overflow of the clock's ticks).
+constexpr double kLongestLimitSeconds = 3.2e7;
 // Code reported when TetGen threw something that is not its int code.
 constexpr std::int32_t kUnknownThrow = -1;
 
@@ -128,16 +134,29 @@ void* runOnChildThread(void*) {
   ::_exit(4);
 }
 
-std::vector<char> readAll(int fd) {
-  std::vector<char> bytes;
+using Clock = std::chrono::steady_clock;
+
+// Milliseconds left until `deadline` for poll(): -1 (wait without limit) when
+// there is no deadline, else at least 0.
+int pollTimeout(const Clock::time_point* deadline) {
+  if (deadline == nullptr) return -1;
+  const auto left = std::chrono::ceil<std::chrono::milliseconds>(*deadline - Clock::now());
+  return static_cast<int>(std::max<std::chrono::milliseconds::rep>(0, left.count()));
+}
+
+// Reads `fd` to its end; false when `deadline` (if any) passed first.
+bool readAll(int fd, const Clock::time_point* deadline, std::vector<char>& bytes) {
   char chunk[1 << 16];
   for (;;) {
+    pollfd ready{fd, POLLIN, 0};
+    const int polled = ::poll(&ready, 1, pollTimeout(deadline));
+    if (polled < 0 && errno == EINTR) continue;
+    if (polled == 0) return false;
     const ssize_t n = ::read(fd, chunk, sizeof chunk);
     if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) break;
+    if (n <= 0) return true;
     bytes.insert(bytes.end(), chunk, chunk + n);
   }
-  return bytes;
 }
 
 TetGenChildResult broken(const std::string& detail) {
@@ -149,7 +168,8 @@ TetGenChildResult broken(const std::string& detail) {
 
 }  // namespace
 
-TetGenChildResult runTetGenInChild(const std::string& switches, tetgenio& in, bool silence) {
+TetGenChildResult runTetGenInChild(const std::string& switches, tetgenio& in, bool silence,
+                                   double timeLimitSeconds) {
   int fds[2];
   if (::pipe2(fds, O_CLOEXEC) != 0) {
     return broken(std::string("cannot create a pipe: ") + std::strerror(errno));
@@ -167,11 +187,21 @@ TetGenChildResult runTetGenInChild(const std::string& switches, tetgenio& in, bo
     childMain(fds[1], switches, in, silence);
   }
   ::close(fds[1]);
-  const std::vector<char> bytes = readAll(fds[0]);
+  const Clock::time_point deadline =
+      Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(
+                         std::min(timeLimitSeconds, kLongestLimitSeconds)));
+  std::vector<char> bytes;
+  const bool finished = readAll(fds[0], timeLimitSeconds > 0.0 ? &deadline : nullptr, bytes);
   ::close(fds[0]);
+  if (!finished) ::kill(pid, SIGKILL);
   int waitStatus = 0;
   while (::waitpid(pid, &waitStatus, 0) < 0) {
     if (errno != EINTR) return broken(std::string("waitpid failed: ") + std::strerror(errno));
+  }
+  if (!finished) {
+    TetGenChildResult result;
+    result.status = TetGenChildStatus::kTimedOut;
+    return result;
   }
   if (WIFSIGNALED(waitStatus)) {
     TetGenChildResult result;

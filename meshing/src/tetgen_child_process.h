@@ -26,6 +26,7 @@ enum class TetGenChildStatus {
   kSignal,       ///< the child died of signal `code` (e.g. SIGABRT, SIGSEGV).
   kBrokenChild,  ///< fork/pipe failed, or the child's report was incomplete;
                  ///< `detail` says which.
+  kTimedOut,     ///< the child had not finished by the time limit and was killed.
 };
 
 /// Outcome of runTetGenInChild.
@@ -42,8 +43,11 @@ struct TetGenChildResult {
 /// output through a pipe. The child never runs atexit handlers nor flushes
 /// the parent's inherited stdio buffers (it discards them and leaves with
 /// _exit). With `silence` the child's stdout and stderr go to /dev/null;
-/// otherwise TetGen's own report is flushed to the inherited stdout.
-TetGenChildResult runTetGenInChild(const std::string& switches, tetgenio& in, bool silence);
+/// otherwise TetGen's own report is flushed to the inherited stdout. A child
+/// still running `timeLimitSeconds` after the fork is killed (SIGKILL) and
+/// reaped; 0 means no limit.
+TetGenChildResult runTetGenInChild(const std::string& switches, tetgenio& in, bool silence,
+                                   double timeLimitSeconds = 0.0);
 
 }  // namespace detail
 }  // namespace tetblend

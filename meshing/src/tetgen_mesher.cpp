@@ -4,8 +4,10 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -21,6 +23,17 @@
 namespace tetblend {
 namespace {
 
+// The automatic time limit of the quality refinement (qualityTimeLimit):
+// kQualityTimeFloorSeconds plus kQualityTimeSlack times TetGen's usual time
+// for the tets expected, at kTetGenSecondsPerTet (bench_meshing: 1 M tets in
+// 4.5-6.6 s on the 2-core machine). The tets expected are the larger of
+// kExpectedTetsPerFace per input face (2-3 measured for CGAL's scans with
+// the default quality bound and no volume bound: armadillo 2.6, bunny 2.2)
+// and the solid's volume over the volume bound.
+constexpr double kQualityTimeFloorSeconds = 30.0;
+constexpr double kQualityTimeSlack = 20.0;
+constexpr double kTetGenSecondsPerTet = 6.6e-6;
+constexpr double kExpectedTetsPerFace = 4.0;
 // A region of tets counts as inside the solid when the winding number of one
 // of its tets' centroids exceeds this (exactly 1 inside, 0 outside).
 constexpr double kInsideWinding = 0.5;
@@ -34,11 +47,37 @@ std::string formatFixed(double x) {
   return buffer;
 }
 
+std::string formatSeconds(double seconds) {
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, "%.3g", seconds);
+  return buffer;
+}
+
 std::string formatGeneral(double x) {
   char buffer[64];
   std::snprintf(buffer, sizeof buffer, "%.17g", x);
   return buffer;
 }
+
+// The volume bound of `options` in file units cubed; 0 = none.
+double volumeBound(const TetGenOptions& options, double diagonal) {
+  double maxVolume = options.maxTetVolume;
+  if (options.maxTetVolumeRelative > 0.0) {
+    const double relative = options.maxTetVolumeRelative * diagonal * diagonal * diagonal;
+    maxVolume = maxVolume > 0.0 ? std::min(maxVolume, relative) : relative;
+  }
+  return maxVolume;
+}
+
+// TetGen's output switches: Q (silent) or V (verbose) by options.verbosity.
+std::string reportSwitches(const TetGenOptions& options) {
+  if (options.verbosity <= 0) return "Q";
+  return options.verbosity >= 2 ? "V" : "";
+}
+
+// p: the input is a piecewise linear complex; z: zero-based indices;
+// Y: keep the boundary (no Steiner point on it, input vertices first).
+constexpr const char* kPlainSwitches = "pzY";
 
 std::string buildSwitches(const TetGenOptions& options, double diagonal) {
   if (options.maxRadiusEdgeRatio != 0.0 && !(options.maxRadiusEdgeRatio > 1.0)) {
@@ -52,22 +91,32 @@ std::string buildSwitches(const TetGenOptions& options, double diagonal) {
         "TetGenOptions: minDihedralAngleDeg must lie in [0, 60) degrees and the "
         "volume bounds must be >= 0 (0 = no bound)");
   }
-  // p: the input is a piecewise linear complex; z: zero-based indices;
-  // Y: keep the boundary (no Steiner point on it, input vertices first).
-  std::string s = "pzY";
+  if (std::isnan(options.qualityTimeLimitSeconds)) {
+    throw InputError(
+        "TetGenOptions::qualityTimeLimitSeconds is NaN: use seconds > 0, 0 (automatic) or a "
+        "negative value (no limit)");
+  }
+  std::string s = kPlainSwitches;
   if (options.maxRadiusEdgeRatio > 0.0) {
     s += "q" + formatFixed(options.maxRadiusEdgeRatio);
     if (options.minDihedralAngleDeg > 0.0) s += "/" + formatFixed(options.minDihedralAngleDeg);
   }
-  double maxVolume = options.maxTetVolume;
-  if (options.maxTetVolumeRelative > 0.0) {
-    const double relative = options.maxTetVolumeRelative * diagonal * diagonal * diagonal;
-    maxVolume = maxVolume > 0.0 ? std::min(maxVolume, relative) : relative;
-  }
+  const double maxVolume = volumeBound(options, diagonal);
   if (maxVolume > 0.0) s += "a" + formatGeneral(maxVolume);
-  if (options.verbosity <= 0) s += "Q";
-  if (options.verbosity >= 2) s += "V";
-  return s;
+  return s + reportSwitches(options);
+}
+
+// Seconds TetGen may take with `options` (kQualityTimeFloorSeconds above);
+// 0 = no limit (no quality refinement, or a negative limit asked for).
+double qualityTimeLimit(const SurfaceMesh& surface, const TetGenOptions& options, double diagonal) {
+  if (options.maxRadiusEdgeRatio <= 0.0 || options.qualityTimeLimitSeconds < 0.0) return 0.0;
+  if (options.qualityTimeLimitSeconds > 0.0) return options.qualityTimeLimitSeconds;
+  double expectedTets = kExpectedTetsPerFace * static_cast<double>(surface.triangles.rows());
+  const double maxVolume = volumeBound(options, diagonal);
+  if (maxVolume > 0.0) {
+    expectedTets = std::max(expectedTets, std::abs(enclosedVolume(surface)) / maxVolume);
+  }
+  return kQualityTimeFloorSeconds + kQualityTimeSlack * kTetGenSecondsPerTet * expectedTets;
 }
 
 // TetGen 1.5 terminatetetgen() codes (tetgen.h), as typed errors naming the
@@ -104,8 +153,10 @@ std::string buildSwitches(const TetGenOptions& options, double diagonal) {
   }
 }
 
-TetMesh runTetGen(const SurfaceMesh& surface, const std::string& switches,
-                  const TetGenOptions& options) {
+// TetGen's mesh of `surface` with `switches`, or nothing when it had not
+// finished after `timeLimitSeconds` (0: no limit).
+std::optional<TetMesh> runTetGen(const SurfaceMesh& surface, const std::string& switches,
+                                 const TetGenOptions& options, double timeLimitSeconds) {
   tetgenio in;
   const int nv = static_cast<int>(surface.vertices.rows());
   const int nf = static_cast<int>(surface.triangles.rows());
@@ -126,10 +177,12 @@ TetMesh runTetGen(const SurfaceMesh& surface, const std::string& switches,
     for (int k = 0; k < 3; ++k) facet.polygonlist[0].vertexlist[k] = surface.triangles(f, k);
   }
   detail::TetGenChildResult run =
-      detail::runTetGenInChild(switches, in, /*silence=*/options.verbosity <= 0);
+      detail::runTetGenInChild(switches, in, /*silence=*/options.verbosity <= 0, timeLimitSeconds);
   switch (run.status) {
     case detail::TetGenChildStatus::kOk:
       break;
+    case detail::TetGenChildStatus::kTimedOut:
+      return std::nullopt;
     case detail::TetGenChildStatus::kTetGenError:
       throwTetGenError(run.code, options.sourceName);
     case detail::TetGenChildStatus::kSignal:
@@ -284,8 +337,20 @@ void checkBoundary(const TetMesh& mesh, const SurfaceMesh& surface) {
 
 TetMesh tetrahedralize(const SurfaceMesh& closedSurface, const TetGenOptions& options) {
   requireValidRest(closedSurface, options.sourceName);
-  const std::string switches = buildSwitches(options, boundingBoxDiagonal(closedSurface.vertices));
-  TetMesh mesh = runTetGen(closedSurface, switches, options);
+  const double diagonal = boundingBoxDiagonal(closedSurface.vertices);
+  const std::string switches = buildSwitches(options, diagonal);
+  const double timeLimit = qualityTimeLimit(closedSurface, options, diagonal);
+  std::optional<TetMesh> refined = runTetGen(closedSurface, switches, options, timeLimit);
+  if (!refined) {
+    refined = runTetGen(closedSurface, kPlainSwitches + reportSwitches(options), options, 0.0);
+    if (options.notice) {
+      options.notice(options.sourceName + ": TetGen's quality refinement had not finished after " +
+                     formatSeconds(timeLimit) +
+                     " s (very small angles or nearly touching faces in the surface?); "
+                     "meshed without it, the examples refine the interior where they need");
+    }
+  }
+  TetMesh mesh = std::move(*refined);
   orientPositively(mesh);
   mesh = keepInside(mesh, closedSurface);
   checkBoundary(mesh, closedSurface);

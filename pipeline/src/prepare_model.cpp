@@ -270,6 +270,7 @@ ModelData preparedAsIs(const SurfaceMesh& rest, const std::vector<SurfaceMesh>& 
   tetgen.maxRadiusEdgeRatio = options.radiusEdgeRatio;
   tetgen.maxTetVolume = options.maxVolume.value_or(0.0);
   tetgen.sourceName = restName;
+  tetgen.notice = [&](const std::string& line) { say(messages.warning, line); };
   const TetMesh tets = meshed.faceComponent.empty()
                            ? tetrahedralize(meshed.surface, tetgen)
                            : tetrahedralizeEachComponent(meshed.surface, meshed.faceComponent,

@@ -4,11 +4,14 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <map>
 #include <random>
+#include <string>
+#include <vector>
 
 #include <unistd.h>
 
@@ -214,6 +217,42 @@ TEST(TetGenMesher, InvalidOptions) {
   EXPECT_THROW(tetrahedralize(cube(), options), InputError);
 }
 
+// A quality refinement stopped at its time limit (here one that no child
+// process can meet) gives TetGen's plain tetrahedralisation, bit for bit,
+// and one notice; within its limit the refinement adds Steiner points.
+TEST(TetGenMesher, QualityRefinementPastItsTimeLimitGivesThePlainTetrahedralisation) {
+  std::mt19937_64 rng(testing_surfaces::testSeed());
+  const SurfaceMesh surface = testing_surfaces::randomStarShape(rng);
+  TetGenOptions plain;
+  plain.maxRadiusEdgeRatio = 0.0;
+  const TetMesh unrefined = tetrahedralize(surface, plain);
+  TetGenOptions options;
+  options.maxTetVolumeRelative = 1e-3;
+  options.sourceName = "star.off";
+  std::vector<std::string> notices;
+  options.notice = [&](const std::string& line) { notices.push_back(line); };
+  const TetMesh refined = tetrahedralize(surface, options);
+  EXPECT_TRUE(notices.empty());
+  EXPECT_GT(refined.vertices.rows(), unrefined.vertices.rows());
+
+  options.qualityTimeLimitSeconds = 1e-9;
+  const TetMesh stopped = tetrahedralize(surface, options);
+  expectBoundaryPreserved(surface, stopped);
+  EXPECT_TRUE(stopped.tets == unrefined.tets);
+  EXPECT_TRUE(stopped.vertices == unrefined.vertices);
+  ASSERT_EQ(notices.size(), 1u);
+  EXPECT_EQ(notices[0].rfind("star.off: TetGen's quality refinement had not finished", 0), 0u)
+      << notices[0];
+}
+
+TEST(TetGenMesher, ATimeLimitThatIsNotANumberIsRefused) {
+  TetGenOptions options;
+  options.qualityTimeLimitSeconds = std::nan("");
+  EXPECT_THROW(tetrahedralize(cube(), options), InputError);
+  options.qualityTimeLimitSeconds = -1.0;  // no limit: valid
+  expectBoundaryPreserved(cube(), tetrahedralize(cube(), options));
+}
+
 TEST(TetGenMesher, SilentUnlessVerbosityIsAsked) {
   ::testing::internal::CaptureStdout();
   tetrahedralize(cube());
@@ -229,8 +268,8 @@ TEST(TetGenMesher, RealMeshesFromCgalDemo) {
   const std::string tarball = testing_cgal::cgalDataTarball();
   if (tarball.empty()) GTEST_SKIP() << testing_cgal::kMissingCgalDemo;
   const std::vector<std::string> names = {"sphere.off", "elephant.off"};
-  const std::filesystem::path meshes =
-      testing_cgal::extractCgalMeshes(tarball, {"sphere.off", "elephant.off", "camel.off"}, "tetgen");
+  const std::filesystem::path meshes = testing_cgal::extractCgalMeshes(
+      tarball, {"sphere.off", "elephant.off", "camel.off"}, "tetgen");
   ASSERT_FALSE(meshes.empty());
   const std::filesystem::path dir = meshes.parent_path().parent_path();
   for (const std::string& n : names) {

@@ -4,6 +4,7 @@
 // works on per-element maps; tets make them full-rank). TetGen's switch string
 // is built inside and never exposed.
 
+#include <functional>
 #include <string>
 
 #include "tetblend/core/mesh_types.h"
@@ -32,8 +33,21 @@ struct TetGenOptions {
   /// 0: TetGen is silent (switch Q; library code never prints by default).
   /// 1: TetGen's normal report on stdout. 2: its verbose report (switch V).
   int verbosity = 0;
+  /// Seconds the quality refinement (maxRadiusEdgeRatio > 0) may take; 0
+  /// = automatic (30 s plus 20 times TetGen's usual time for the tets
+  /// expected), negative = no limit. TetGen still running then is stopped,
+  /// the solid is meshed again by TetGen's constrained Delaunay
+  /// tetrahedralisation alone (no quality refinement, no volume bound), and
+  /// `notice` says so. TetGen's refinement can run for minutes near very
+  /// small input angles or faces that nearly touch, where the plain
+  /// tetrahedralisation takes seconds.
+  double qualityTimeLimitSeconds = 0.0;
   /// Name of the surface (e.g. its file) used in error messages.
   std::string sourceName = "surface";
+  /// Told, in one line naming sourceName, when tetrahedralize departs from
+  /// these options (the quality refinement stopped at its time limit); may
+  /// be empty. Called on the calling thread.
+  std::function<void(const std::string&)> notice;
 };
 
 /// Tetrahedralises the solid bounded by `closedSurface` (#V by 3, #F by 3,
