@@ -237,8 +237,10 @@ struct CompatibleTetBuilder::Impl {
                                             kLeastRegionGrowth * static_cast<double>(lastRegion);
       if (!improved && !grew) break;
       Vertices current = positions;  // every attempt starts from the best state
+      UntangleEffort attempt = effort;
+      if (lastRegion == 0) attempt.stallRounds = effort.firstAttemptStallRounds;
       if (!region.empty()) {
-        rounds += untangle(rest.tets, reference, region, effort, current).rounds;
+        rounds += untangle(rest.tets, reference, region, attempt, current).rounds;
       }
       std::vector<int> now = invertedTets(current, rest.tets);
       improved = now.size() < inverted.size();

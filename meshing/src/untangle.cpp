@@ -37,15 +37,9 @@ constexpr size_t kTetGrain = 1024;
 // Free vertices per TBB task of the gradient and Hessian gathers (~20
 // corners each).
 constexpr size_t kVertexGrain = 1024;
-// An untangling attempt gives up when this many rounds in a row neither
-// raised the smallest det F (by UntangleEffort::minDetProgress) nor
-// lowered the count of inverted tets: the free
-// region is too small (or the example cannot be embedded), and a larger
-// region or refinement is the remedy. (Rounds with Newton steps converge at
-// each ε, so min det F can sit still for many rounds while the count falls:
-// judged by min det F alone, cactus's 1080° twist stopped with 6 tets
-// inverted, 27 → 6 in 12 rounds.)
-constexpr int kStagnantRounds = 8;
+// An untangling attempt gives up after UntangleEffort::stallRounds rounds in
+// a row that neither raised the smallest det F (by
+// UntangleEffort::minDetProgress) nor lowered the count of inverted tets.
 // It also gives up once ε falls below this fraction of |min det F| with tets
 // still inverted: the barrier then holds them inverted while the energy
 // grows like 1/ε (on the hard-pose corpus, successful attempts kept ε above
@@ -191,8 +185,9 @@ class UntangleEnergy {
           const int position = blockPosition_[static_cast<size_t>(k)][static_cast<size_t>(q)];
           if (position < 0) continue;
           for (int l = 0; l < 3; ++l) {
-            double* target =
-                values + hessian_.outerIndexPtr()[3 * column + static_cast<size_t>(l)] + 3 * position;
+            double* target = values +
+                             hessian_.outerIndexPtr()[3 * column + static_cast<size_t>(l)] +
+                             3 * position;
             for (int r = 0; r < 3; ++r) target[r] += tetHessian(3 * q + r, 3 * c.corner + l);
           }
         }
@@ -261,19 +256,22 @@ class UntangleEnergy {
       blockStart_[c + 1] = blockStart_[c] + static_cast<int>(rows[c].size());
     }
     blockRows_.reserve(static_cast<size_t>(blockStart_.back()));
-    for (const std::vector<int>& list : rows) blockRows_.insert(blockRows_.end(), list.begin(), list.end());
+    for (const std::vector<int>& list : rows)
+      blockRows_.insert(blockRows_.end(), list.begin(), list.end());
     const Eigen::Index size = 3 * static_cast<Eigen::Index>(count);
     hessian_.resize(size, size);
     Eigen::VectorXi perColumn(size);
     for (size_t c = 0; c < count; ++c) {
-      perColumn.segment<3>(3 * static_cast<Eigen::Index>(c)).setConstant(3 * (blockStart_[c + 1] - blockStart_[c]));
+      perColumn.segment<3>(3 * static_cast<Eigen::Index>(c))
+          .setConstant(3 * (blockStart_[c + 1] - blockStart_[c]));
     }
     hessian_.reserve(perColumn);
     for (size_t c = 0; c < count; ++c) {
       for (int l = 0; l < 3; ++l) {
         const Eigen::Index column = 3 * static_cast<Eigen::Index>(c) + l;
         for (int k = blockStart_[c]; k < blockStart_[c + 1]; ++k) {
-          for (int r = 0; r < 3; ++r) hessian_.insert(3 * blockRows_[static_cast<size_t>(k)] + r, column) = 0.0;
+          for (int r = 0; r < 3; ++r)
+            hessian_.insert(3 * blockRows_[static_cast<size_t>(k)] + r, column) = 0.0;
         }
       }
     }
@@ -287,8 +285,9 @@ class UntangleEnergy {
         for (int q = 0; q < 4; ++q) {
           const int row = variable_[static_cast<size_t>(tets_(t, q))];
           blockPosition_[static_cast<size_t>(k)][static_cast<size_t>(q)] =
-              row < static_cast<int>(c) ? -1
-                                        : static_cast<int>(std::lower_bound(first, last, row) - first);
+              row < static_cast<int>(c)
+                  ? -1
+                  : static_cast<int>(std::lower_bound(first, last, row) - first);
         }
       }
     }
@@ -308,7 +307,7 @@ class UntangleEnergy {
   std::vector<double> tetEnergy_;                         // per active tet
   std::vector<Eigen::Matrix<double, 3, 4>> tetGradient_;  // per active tet
   std::vector<Matrix12d> tetHessian_;                     // per active tet, on demand
-  std::vector<int> cornerStart_;  // per free vertex: its range in corners_
+  std::vector<int> cornerStart_;                          // per free vertex: its range in corners_
   std::vector<Corner> corners_;
   std::vector<int> blockStart_;  // per free vertex: its range in blockRows_
   std::vector<int> blockRows_;
@@ -455,12 +454,14 @@ UntangleOutcome untangle(const Tets& tets, const std::vector<TetElement>& elemen
   double bestMinDet = minDet;
   int fewestInverted = inverted;
   int stagnant = 0;
-  while (minDet <= 0.0 && outcome.rounds < effort.maxRounds && stagnant < kStagnantRounds &&
+  while (minDet <= 0.0 && outcome.rounds < effort.maxRounds && stagnant < effort.stallRounds &&
          epsilon >= -kHopelessEpsilon * minDet) {
-    const EnergyChange change = minimiseNewton(energy, epsilon, effort.iterationsPerRound, solver, x);
+    const EnergyChange change =
+        minimiseNewton(energy, epsilon, effort.iterationsPerRound, solver, x);
     ++outcome.rounds;
     std::tie(minDet, inverted) = energy.determinants();
-    if (minDet > bestMinDet + effort.minDetProgress * std::abs(bestMinDet) || inverted < fewestInverted) {
+    if (minDet > bestMinDet + effort.minDetProgress * std::abs(bestMinDet) ||
+        inverted < fewestInverted) {
       stagnant = 0;
     } else {
       ++stagnant;

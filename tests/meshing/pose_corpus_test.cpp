@@ -34,11 +34,15 @@ namespace {
 // arithmetic: small changes to it (its SVD, its first ε, the compiler's
 // fused multiply-adds after a refactoring) gave 6, 50, 56, 74, 75 and 196
 // tets (482 with L-BFGS). prepare succeeds on it and leaves these
-// tets out of the stitch. The test fails when a count grows past its ceiling
-// (measured + half, at least 2) and says when one reaches zero, so the table
-// shrinks.
+// tets out of the stitch. dino's 720° twist embedded until the first
+// untangling attempt was given 30 stalled rounds instead of 8 (2026-11-29),
+// which left it 2 tets while other sets lost most of theirs (the README's
+// The untangler: clean frames with excluded tets 16 -> 8 over five sets,
+// knot1's twist1080 79 -> 57 here). The test fails when a count grows past
+// its ceiling (measured + half, at least 2) and says when one reaches zero,
+// so the table shrinks.
 const std::map<std::pair<std::string, std::string>, std::size_t> kKnownInverted = {
-    {{"knot1", "twist1080"}, 78}};
+    {{"knot1", "twist1080"}, 57}, {{"dino", "twist720"}, 2}};
 
 std::size_t knownCeiling(std::size_t measured) {
   return measured + std::max<std::size_t>(2, measured / 2);
@@ -218,8 +222,8 @@ TEST(PoseCorpusPosedRest, EveryCleanExampleComesBackUntangledOnTheFinalMesh) {
   const std::optional<SurfaceMesh> knot = cgalSurface("knot1", "knot_posed_rest");
   if (!knot) GTEST_SKIP() << testing_cgal::kMissingCgalDemo;
   const std::vector<NamedPose> poses = hardPoses(knot->vertices, knot->triangles);
-  const auto restPose = std::find_if(poses.begin(), poses.end(),
-                                     [](const NamedPose& pose) { return pose.name == "dqsTwist300"; });
+  const auto restPose = std::find_if(
+      poses.begin(), poses.end(), [](const NamedPose& pose) { return pose.name == "dqsTwist300"; });
   ASSERT_NE(restPose, poses.end());
   SurfaceMesh posed = *knot;
   posed.vertices = restPose->vertices;

@@ -68,6 +68,22 @@ struct UntangleEffort {
   /// of a slightly inverted example tet about −1 / (its relative height),
   /// where the untangler gives up.
   bool thickenedReference = false;
+  /// An attempt gives up after this many rounds in a row that neither raised
+  /// the smallest det F (by minDetProgress) nor lowered the count of
+  /// inverted tets: its free region is too small (or the example cannot be
+  /// embedded), and a larger region or refinement is the remedy. (Rounds
+  /// with Newton steps converge at each ε, so min det F can sit still for
+  /// many rounds while the count falls: judged by min det F alone, cactus's
+  /// 1080° twist stopped with 6 tets inverted, 27 → 6 in 12 rounds.)
+  int stallRounds = 8;
+  /// stallRounds for the first attempt of an untangling (the smallest
+  /// region). From many inverted tets at a large ε, the count first rises
+  /// while the region relaxes, then falls as ε shrinks: with 8, the 536 k-tet
+  /// subdivided armadillo's first attempts (2-3 k free vertices) gave up at
+  /// ε ≈ 0.5 with more tets inverted than at their start, and one frame was
+  /// then untangled with 25 k free vertices (60 s of its 106 s); with 30 the
+  /// first attempts succeed (42 s; see the README, The untangler).
+  int firstAttemptStallRounds = 30;
 };
 
 /// Options of CompatibleTetBuilder, with their defaults.
