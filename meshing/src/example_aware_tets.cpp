@@ -344,9 +344,11 @@ CompatibleTetMeshes buildCompatibleTetMeshes(const TetMesh& rest, int surfaceVer
   const Triangles triangles = boundarySurface(rest).triangles;
   const std::vector<int> vertexComponent = vertexComponents(rest);
   const std::vector<int> faceComponent = faceComponents(triangles, vertexComponent);
-  for (const Vertices& example : exampleSurfaces) {
-    meshes.selfIntersections.push_back(findSelfIntersections(example, triangles, 1, faceComponent));
-  }
+  meshes.selfIntersections.resize(exampleSurfaces.size());
+  tbb::parallel_for(std::size_t{0}, exampleSurfaces.size(), [&](std::size_t k) {
+    meshes.selfIntersections[k] =
+        findSelfIntersections(exampleSurfaces[k], triangles, 1, faceComponent);
+  });
 
   // Stage 1: rigid edges and faces that leave a clean example's solid, then
   // all-surface tets an example inverts (no placement can help either).

@@ -4,12 +4,12 @@
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
+#include <CGAL/AABB_tree/internal/AABB_node.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Side_of_triangle_mesh.h>
 #include <CGAL/Surface_mesh.h>
 
 #include <initializer_list>
-#include <iterator>
 #include <vector>
 
 namespace tetblend {
@@ -28,15 +28,35 @@ struct SurfaceInterior::Impl {
   std::unique_ptr<CGAL::Side_of_triangle_mesh<Mesh, Kernel, CGAL::Default, Tree>> side;
   bool usable = false;  // the surface built as a closed mesh
 
-  // True when a face found by the query has none of `corners` as a vertex.
+  // Visits the faces whose bounding box overlaps `box`, calling visit(f)
+  // until it returns true; returns whether one did. Boxes are compared in
+  // doubles, so faces that share a corner with the query (which touch it, a
+  // degenerate case for the filtered predicates: exact arithmetic every
+  // time) reach the caller untested, to be skipped by their corners.
+  template <typename Visit>
+  bool anyFaceNear(const CGAL::Bbox_3& box, const Visit& visit) const {
+    struct Traits {
+      const CGAL::Bbox_3& box;
+      const Visit& visit;
+      bool found = false;
+      bool go_further() const { return !found; }
+      void intersection(const CGAL::Bbox_3&, const Primitive& primitive) {
+        found = visit(static_cast<Eigen::Index>(primitive.id().idx()));
+      }
+      bool do_intersect(const CGAL::Bbox_3&, const CGAL::AABB_node<Tree::AABB_traits>& node) const {
+        return CGAL::do_overlap(box, node.bbox());
+      }
+    } traits{box, visit};
+    tree->traversal(box, traits);
+    return traits.found;
+  }
+
+  // True when the query meets a face that has none of `corners` as a vertex.
   template <typename Query>
   bool meetsOtherFace(const Query& query, std::initializer_list<int> corners) const {
-    std::vector<Primitive::Id> faces;
-    tree->all_intersected_primitives(query, std::back_inserter(faces));
-    for (const Primitive::Id& face : faces) {
-      if (sharedCorners(static_cast<Eigen::Index>(face.idx()), corners) == 0) return true;
-    }
-    return false;
+    return anyFaceNear(query.bbox(), [&](Eigen::Index f) {
+      return sharedCorners(f, corners) == 0 && CGAL::do_intersect(query, triangle(f));
+    });
   }
 
   int sharedCorners(Eigen::Index f, std::initializer_list<int> corners) const {
@@ -47,34 +67,29 @@ struct SurfaceInterior::Impl {
     return shared;
   }
 
+  const Point& point(int v) const { return points[static_cast<std::size_t>(v)]; }
+  Kernel::Triangle_3 triangle(Eigen::Index f) const {
+    return {point(triangles(f, 0)), point(triangles(f, 1)), point(triangles(f, 2))};
+  }
+
   // True when the triangle (a, b, c) and a face sharing exactly one corner
   // with it meet elsewhere: two triangles sharing one vertex meet beyond it
   // exactly when either's opposite edge meets the other triangle.
   bool meetsFaceAtOneCorner(int a, int b, int c) const {
-    const Kernel::Triangle_3 query(points[static_cast<std::size_t>(a)],
-                                   points[static_cast<std::size_t>(b)],
-                                   points[static_cast<std::size_t>(c)]);
-    std::vector<Primitive::Id> faces;
-    tree->all_intersected_primitives(query, std::back_inserter(faces));
-    for (const Primitive::Id& face : faces) {
-      const auto f = static_cast<Eigen::Index>(face.idx());
-      if (sharedCorners(f, {a, b, c}) != 1) continue;
+    const Kernel::Triangle_3 query(point(a), point(b), point(c));
+    return anyFaceNear(query.bbox(), [&](Eigen::Index f) {
+      if (sharedCorners(f, {a, b, c}) != 1) return false;
       int k = 0;
       while (triangles(f, k) != a && triangles(f, k) != b && triangles(f, k) != c) ++k;
       const int shared = triangles(f, k);
-      const Point& p = points[static_cast<std::size_t>(triangles(f, (k + 1) % 3))];
-      const Point& q = points[static_cast<std::size_t>(triangles(f, (k + 2) % 3))];
+      const Point& p = point(triangles(f, (k + 1) % 3));
+      const Point& q = point(triangles(f, (k + 2) % 3));
       if (CGAL::do_intersect(Kernel::Segment_3(p, q), query)) return true;
       const int u = shared == a ? b : a;
       const int w = shared == c ? b : c;
-      const Kernel::Triangle_3 other(points[static_cast<std::size_t>(shared)], p, q);
-      if (CGAL::do_intersect(Kernel::Segment_3(points[static_cast<std::size_t>(u)],
-                                               points[static_cast<std::size_t>(w)]),
-                             other)) {
-        return true;
-      }
-    }
-    return false;
+      return CGAL::do_intersect(Kernel::Segment_3(point(u), point(w)),
+                                Kernel::Triangle_3(point(shared), p, q));
+    });
   }
 
   bool inside(const Point& p) const { return (*side)(p) != CGAL::ON_UNBOUNDED_SIDE; }
@@ -100,7 +115,8 @@ SurfaceInterior::SurfaceInterior(const Vertices& vertices, const Triangles& tria
   }
   m.usable = true;
   m.tree = std::make_unique<Tree>(faces(m.mesh).first, faces(m.mesh).second, m.mesh);
-  m.side = std::make_unique<CGAL::Side_of_triangle_mesh<Mesh, Kernel, CGAL::Default, Tree>>(*m.tree);
+  m.side =
+      std::make_unique<CGAL::Side_of_triangle_mesh<Mesh, Kernel, CGAL::Default, Tree>>(*m.tree);
 }
 
 SurfaceInterior::~SurfaceInterior() = default;
