@@ -225,7 +225,10 @@ struct CompatibleTetBuilder::Impl {
       UntangleEffort attempt = effort;
       if (first) attempt.stallRounds = effort.firstAttemptStallRounds;
       first = false;
-      rounds += untangle(rest.tets, reference, region, attempt, current).rounds;
+      const FreeRegionAround around = [&](const std::vector<int>& bad) {
+        return interiorRegion(bad, rings);
+      };
+      rounds += untangle(rest.tets, reference, region, attempt, current, around).rounds;
       std::vector<int> now = invertedTets(current, rest.tets);
       if (now.size() >= inverted.size()) break;
       positions = std::move(current);

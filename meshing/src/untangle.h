@@ -14,6 +14,7 @@
 // minutes with 300 iterations per ε; Newton with 2 steps per ε, with the
 // stall and start rules of untangle.cpp, leaves 1 pose with 75 (50 s).
 
+#include <functional>
 #include <vector>
 
 #include "tet_elements.h"
@@ -27,14 +28,20 @@ struct UntangleOutcome {
   double minDet = 0.0;  ///< smallest det F_t at the end (unitless)
 };
 
+/// The free vertices for untangling the given tets (the caller's rings
+/// around them): untangle narrows its free region to these once most of
+/// its inverted tets are repaired (untangle.cpp, kRefocusFall).
+using FreeRegionAround = std::function<std::vector<int>(const std::vector<int>& invertedTets)>;
+
 /// Moves the vertices listed in `freeVertices` (distinct indices into
 /// `positions`, #V by 3) to remove inverted tets among the tets touching
 /// them; every other vertex stays put. Stops as soon as all those tets have
 /// det F > 0, or after effort.maxRounds rounds of at most
 /// effort.iterationsPerRound Newton steps each, or when it stalls
-/// (effort.maxRings is the caller's).
+/// (effort.maxRings is the caller's). With `regionAround`, the free region
+/// narrows as the inverted tets become few.
 UntangleOutcome untangle(const Tets& tets, const std::vector<TetElement>& elements,
                          const std::vector<int>& freeVertices, const UntangleEffort& effort,
-                         Vertices& positions);
+                         Vertices& positions, const FreeRegionAround& regionAround = {});
 
 }  // namespace tetblend

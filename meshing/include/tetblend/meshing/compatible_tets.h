@@ -84,6 +84,14 @@ struct UntangleEffort {
   /// then untangled with 25 k free vertices (60 s of its 106 s); with 30 the
   /// first attempts succeed (42 s; see the README, The untangler).
   int firstAttemptStallRounds = 30;
+  /// σ's floor in the ε update of Garanzha et al. (2021), Alg. 1,
+  /// σ = max(1 − E_after / E_before, smallestDecrease): ε shrinks by at
+  /// least about σ / 2 per round. Clean examples: 0.1 (0.3 made the corpus
+  /// about 1.4 times faster but left 4 clean poses with 69 inverted tets,
+  /// against 3 with 9, before the stall test counted inverted tets; 0.2 on
+  /// 2026-11-29 left 16 of the lion's 48 gallop frames with tets instead of
+  /// none, and took 154 s instead of 53).
+  double smallestDecrease = 0.1;
 };
 
 /// Options of CompatibleTetBuilder, with their defaults.

@@ -1,0 +1,166 @@
+// The untangler (meshing/src/untangle.h) on a Kuhn-subdivided cube grid whose
+// interior is folded in several places: every tet valid afterwards, the
+// fixed vertices bit for bit, and the same with the free region narrowed as
+// the inverted tets become few (FreeRegionAround).
+
+#include <gtest/gtest.h>
+
+#include <Eigen/LU>
+#include <algorithm>
+#include <array>
+#include <set>
+#include <vector>
+
+#include "tet_elements.h"
+#include "tetblend/core/tet_geometry.h"
+#include "untangle.h"
+
+namespace tetblend {
+namespace {
+
+constexpr int kCells = 8;  // cells per side
+constexpr int kSide = kCells + 1;
+
+int vertexIndex(int i, int j, int k) { return (i * kSide + j) * kSide + k; }
+
+bool onBoundary(int v) {
+  const int i = v / (kSide * kSide), j = (v / kSide) % kSide, k = v % kSide;
+  return i == 0 || j == 0 || k == 0 || i == kCells || j == kCells || k == kCells;
+}
+
+// The unit cube split into kCells³ cells of 6 tets each (Kuhn's split along
+// the cell diagonal), every tet positively oriented.
+TetMesh kuhnGrid() {
+  TetMesh mesh;
+  mesh.vertices.resize(kSide * kSide * kSide, 3);
+  for (int i = 0; i < kSide; ++i) {
+    for (int j = 0; j < kSide; ++j) {
+      for (int k = 0; k < kSide; ++k) {
+        mesh.vertices.row(vertexIndex(i, j, k)) << i, j, k;
+      }
+    }
+  }
+  mesh.vertices /= kCells;
+  const std::array<std::array<int, 3>, 6> orders = {
+      {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}}};
+  std::vector<std::array<int, 4>> tets;
+  for (int i = 0; i < kCells; ++i) {
+    for (int j = 0; j < kCells; ++j) {
+      for (int k = 0; k < kCells; ++k) {
+        for (const auto& order : orders) {
+          std::array<int, 3> corner = {i, j, k};
+          std::array<int, 4> tet{};
+          tet[0] = vertexIndex(corner[0], corner[1], corner[2]);
+          for (int step = 0; step < 3; ++step) {
+            ++corner[static_cast<std::size_t>(order[static_cast<std::size_t>(step)])];
+            tet[static_cast<std::size_t>(step) + 1] = vertexIndex(corner[0], corner[1], corner[2]);
+          }
+          tets.push_back(tet);
+        }
+      }
+    }
+  }
+  mesh.tets.resize(static_cast<Eigen::Index>(tets.size()), 4);
+  for (std::size_t t = 0; t < tets.size(); ++t) {
+    const auto row = static_cast<Eigen::Index>(t);
+    for (int a = 0; a < 4; ++a) mesh.tets(row, a) = tets[t][static_cast<std::size_t>(a)];
+    if (tetSignedVolume(mesh.vertices, mesh.tets.row(row)) < 0.0) {
+      std::swap(mesh.tets(row, 2), mesh.tets(row, 3));
+    }
+  }
+  return mesh;
+}
+
+std::vector<int> invertedTetsOf(const Vertices& positions, const Tets& tets) {
+  std::vector<int> inverted;
+  for (Eigen::Index t = 0; t < tets.rows(); ++t) {
+    if (!(tetSignedVolume(positions, tets.row(t)) > 0.0)) {
+      inverted.push_back(static_cast<int>(t));
+    }
+  }
+  return inverted;
+}
+
+// The interior vertices of `tets` and of the tets sharing a vertex with them.
+std::vector<int> interiorAround(const TetMesh& mesh, const std::vector<int>& tets) {
+  std::set<int> near;
+  for (int t : tets) {
+    for (int a = 0; a < 4; ++a) near.insert(mesh.tets(t, a));
+  }
+  std::set<int> region;
+  for (Eigen::Index t = 0; t < mesh.tets.rows(); ++t) {
+    bool touches = false;
+    for (int a = 0; a < 4; ++a) touches = touches || near.count(mesh.tets(t, a)) > 0;
+    if (!touches) continue;
+    for (int a = 0; a < 4; ++a) {
+      if (!onBoundary(mesh.tets(t, a))) region.insert(mesh.tets(t, a));
+    }
+  }
+  return {region.begin(), region.end()};
+}
+
+// The grid with interior vertices pushed through their neighbours: six by
+// 1.2 cells (folds that untangle in a few rounds) and one by 3.5 cells, far
+// from them (one that takes many more).
+Vertices foldedGrid(const TetMesh& mesh) {
+  Vertices positions = mesh.vertices;
+  for (int i : {2, 4, 6}) {
+    positions(vertexIndex(i, 2, 2), 0) += 1.2 / kCells;
+    positions(vertexIndex(i, 2, 6), 1) += 1.2 / kCells;
+  }
+  positions(vertexIndex(4, 6, 4), 2) -= 3.5 / kCells;
+  return positions;
+}
+
+std::vector<int> interiorVertices(const TetMesh& mesh) {
+  std::vector<int> interior;
+  for (int v = 0; v < static_cast<int>(mesh.vertices.rows()); ++v) {
+    if (!onBoundary(v)) interior.push_back(v);
+  }
+  return interior;
+}
+
+TEST(Untangle, AFoldedGridComesBackValidWithItsBoundaryBitForBit) {
+  const TetMesh mesh = kuhnGrid();
+  const std::vector<TetElement> elements = buildTetElements(mesh);
+  Vertices positions = foldedGrid(mesh);
+  const Vertices start = positions;
+  ASSERT_GE(invertedTetsOf(positions, mesh.tets).size(), 4u);
+  untangle(mesh.tets, elements, interiorVertices(mesh), UntangleEffort{}, positions);
+  EXPECT_TRUE(invertedTetsOf(positions, mesh.tets).empty());
+  for (int v = 0; v < static_cast<int>(positions.rows()); ++v) {
+    if (onBoundary(v)) {
+      EXPECT_EQ(positions.row(v), start.row(v)) << "vertex " << v;
+    }
+  }
+}
+
+TEST(Untangle, NarrowingTheRegionToTheLastInvertedTetsStillUntanglesThem) {
+  const TetMesh mesh = kuhnGrid();
+  const std::vector<TetElement> elements = buildTetElements(mesh);
+  Vertices positions = foldedGrid(mesh);
+  const Vertices start = positions;
+  const std::vector<int> inverted = invertedTetsOf(positions, mesh.tets);
+  const std::vector<int> first = interiorAround(mesh, inverted);
+  std::vector<std::size_t> asked;  // tets asked about, per call
+  std::set<int> everFree(first.begin(), first.end());
+  const FreeRegionAround around = [&](const std::vector<int>& bad) {
+    asked.push_back(bad.size());
+    std::vector<int> region = interiorAround(mesh, bad);
+    everFree.insert(region.begin(), region.end());
+    return region;
+  };
+  untangle(mesh.tets, elements, first, UntangleEffort{}, positions, around);
+  EXPECT_TRUE(invertedTetsOf(positions, mesh.tets).empty());
+  // The region was narrowed, to a quarter of the inverted tets or fewer.
+  ASSERT_FALSE(asked.empty()) << inverted.size() << " inverted tets at the start";
+  EXPECT_LE(4 * asked.front(), inverted.size());
+  for (int v = 0; v < static_cast<int>(positions.rows()); ++v) {
+    if (everFree.count(v) == 0) {
+      EXPECT_EQ(positions.row(v), start.row(v)) << "vertex " << v;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace tetblend
