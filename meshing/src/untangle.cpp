@@ -207,9 +207,7 @@ class UntangleEnergy {
     double smallest = std::numeric_limits<double>::infinity();
     int inverted = 0;
     for (int t : active_) {
-      const double det =
-          deformationGradient(positions_, tets_.row(t), elements_[static_cast<size_t>(t)])
-              .determinant();
+      const double det = determinant(t);
       smallest = std::min(smallest, det);
       if (!(det > 0.0)) ++inverted;
     }
@@ -220,10 +218,7 @@ class UntangleEnergy {
   std::vector<int> invertedTets() const {
     std::vector<int> inverted;
     for (int t : active_) {
-      const double det =
-          deformationGradient(positions_, tets_.row(t), elements_[static_cast<size_t>(t)])
-              .determinant();
-      if (!(det > 0.0)) inverted.push_back(t);
+      if (!(determinant(t) > 0.0)) inverted.push_back(t);
     }
     return inverted;
   }
@@ -232,6 +227,11 @@ class UntangleEnergy {
   const Vertices& positions() const { return positions_; }
 
  private:
+  double determinant(int t) const {
+    return deformationGradient(positions_, tets_.row(t), elements_[static_cast<size_t>(t)])
+        .determinant();
+  }
+
   template <typename Body>
   void forEachFreeVertex(const Body& body) const {
     tbb::parallel_for(tbb::blocked_range<size_t>(0, freeVertices_.size(), kVertexGrain),
