@@ -89,8 +89,8 @@ struct UntangleEffort {
   /// least about σ / 2 per round. Clean examples: 0.1 (0.3 made the corpus
   /// about 1.4 times faster but left 4 clean poses with 69 inverted tets,
   /// against 3 with 9, before the stall test counted inverted tets; 0.2 on
-  /// 2026-11-29 left 16 of the lion's 48 gallop frames with tets instead of
-  /// none, and took 154 s instead of 53).
+  /// 2026-11-29 left 16 clean frames of the lion's 48-frame gallop with
+  /// tets instead of none, and took 154 s instead of 53).
   double smallestDecrease = 0.1;
 };
 
