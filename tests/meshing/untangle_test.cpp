@@ -5,14 +5,14 @@
 
 #include <gtest/gtest.h>
 
-#include <Eigen/LU>
-#include <algorithm>
 #include <array>
 #include <set>
+#include <utility>
 #include <vector>
 
 #include "tet_elements.h"
 #include "tetblend/core/tet_geometry.h"
+#include "tetblend/meshing/compatible_tets.h"
 #include "untangle.h"
 
 namespace tetblend {
@@ -71,16 +71,6 @@ TetMesh kuhnGrid() {
   return mesh;
 }
 
-std::vector<int> invertedTetsOf(const Vertices& positions, const Tets& tets) {
-  std::vector<int> inverted;
-  for (Eigen::Index t = 0; t < tets.rows(); ++t) {
-    if (!(tetSignedVolume(positions, tets.row(t)) > 0.0)) {
-      inverted.push_back(static_cast<int>(t));
-    }
-  }
-  return inverted;
-}
-
 // The interior vertices of `tets` and of the tets sharing a vertex with them.
 std::vector<int> interiorAround(const TetMesh& mesh, const std::vector<int>& tets) {
   std::set<int> near;
@@ -125,9 +115,9 @@ TEST(Untangle, AFoldedGridComesBackValidWithItsBoundaryBitForBit) {
   const std::vector<TetElement> elements = buildTetElements(mesh);
   Vertices positions = foldedGrid(mesh);
   const Vertices start = positions;
-  ASSERT_GE(invertedTetsOf(positions, mesh.tets).size(), 4u);
+  ASSERT_GE(invertedTets(positions, mesh.tets).size(), 4u);
   untangle(mesh.tets, elements, interiorVertices(mesh), UntangleEffort{}, positions);
-  EXPECT_TRUE(invertedTetsOf(positions, mesh.tets).empty());
+  EXPECT_TRUE(invertedTets(positions, mesh.tets).empty());
   for (int v = 0; v < static_cast<int>(positions.rows()); ++v) {
     if (onBoundary(v)) {
       EXPECT_EQ(positions.row(v), start.row(v)) << "vertex " << v;
@@ -140,7 +130,7 @@ TEST(Untangle, NarrowingTheRegionToTheLastInvertedTetsStillUntanglesThem) {
   const std::vector<TetElement> elements = buildTetElements(mesh);
   Vertices positions = foldedGrid(mesh);
   const Vertices start = positions;
-  const std::vector<int> inverted = invertedTetsOf(positions, mesh.tets);
+  const std::vector<int> inverted = invertedTets(positions, mesh.tets);
   const std::vector<int> first = interiorAround(mesh, inverted);
   std::vector<std::size_t> asked;  // tets asked about, per call
   std::set<int> everFree(first.begin(), first.end());
@@ -151,7 +141,7 @@ TEST(Untangle, NarrowingTheRegionToTheLastInvertedTetsStillUntanglesThem) {
     return region;
   };
   untangle(mesh.tets, elements, first, UntangleEffort{}, positions, around);
-  EXPECT_TRUE(invertedTetsOf(positions, mesh.tets).empty());
+  EXPECT_TRUE(invertedTets(positions, mesh.tets).empty());
   // The region was narrowed, to a quarter of the inverted tets or fewer.
   ASSERT_FALSE(asked.empty()) << inverted.size() << " inverted tets at the start";
   EXPECT_LE(4 * asked.front(), inverted.size());
