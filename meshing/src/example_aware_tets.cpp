@@ -12,6 +12,7 @@
 #include <tbb/parallel_pipeline.h>
 #include <tbb/task_arena.h>
 
+#include "crease_rings.h"
 #include "half_edge_table.h"
 #include "surface_interior.h"
 #include "tet_stellar_split.h"
@@ -27,6 +28,14 @@ namespace {
 // Stage 3 rounds in a row without fewer inverted tets of an example before
 // its refinement gives up.
 constexpr int kPatience = 2;
+
+// The widest dihedral angle a tet around a boundary edge is left when a
+// clean example keeps a tet there inverted (creaseRingSplits): a ring of k
+// tets whose example opens the edge by more than k × 150° gets a tet more.
+// A tet's volume on given faces goes with the sine of that angle (½ at
+// 150°). The femur's crease (355° over 2 tets) is caught by any bound below
+// 177.5°; only 150° was measured (2026-11-29, the README's The untangler).
+constexpr double kCreaseTetDihedral = 150.0 * 3.14159265358979323846 / 180.0;
 
 // Working memory of one example's placement per rest tet, an upper bound:
 // a clean example that frees the whole interior holds the Newton untangler's
@@ -90,6 +99,46 @@ std::vector<Simplex> simplicesFreeing(const TetMesh& mesh, const std::vector<int
   }
   std::sort(simplices.begin(), simplices.end());
   simplices.erase(std::unique(simplices.begin(), simplices.end()), simplices.end());
+  return simplices;
+}
+
+// What to split for the inverted tets `bad` of an example with surface
+// `exampleSurface`: for a tet with a boundary edge whose ring of tets cannot
+// span the example's fold there (creaseRingSplits, kCreaseTetDihedral), the
+// split that adds a tet to the ring; for the others, simplicesToSplit's.
+// Splitting a tet's longest edge never adds a tet around its boundary edges:
+// the new vertex becomes the shared apex of both boundary faces again. A
+// 540° twist of CGAL's femur folded a reflex edge with two tets into a
+// 355° crease, and its tet stayed inverted through every round.
+std::vector<Simplex> splitsForInverted(const TetMesh& mesh, const std::vector<int>& bad,
+                                       const Vertices& exampleSurface, const Triangles& outward,
+                                       int surfaceCount, const BoundarySimplices& boundary) {
+  const std::vector<BoundaryEdgeRing> rings = boundaryEdgeRings(mesh, outward);
+  auto ends = [](int u, int v) { return std::pair(std::min(u, v), std::max(u, v)); };
+  auto ringOf = [&](int u, int v) -> const BoundaryEdgeRing* {
+    const auto found = std::lower_bound(rings.begin(), rings.end(), ends(u, v),
+                                        [&](const BoundaryEdgeRing& ring, std::pair<int, int> key) {
+                                          return ends(ring.a, ring.b) < key;
+                                        });
+    return found != rings.end() && ends(found->a, found->b) == ends(u, v) ? &*found : nullptr;
+  };
+  const std::vector<const Vertices*> example = {&exampleSurface};
+  std::vector<Simplex> simplices;
+  for (int t : bad) {
+    std::vector<BoundaryEdgeRing> around;
+    for (int i = 0; i < 4; ++i) {
+      for (int j = i + 1; j < 4; ++j) {
+        if (const BoundaryEdgeRing* ring = ringOf(mesh.tets(t, i), mesh.tets(t, j))) {
+          around.push_back(*ring);
+        }
+      }
+    }
+    std::vector<Simplex> splits =
+        creaseRingSplits(mesh, around, example, boundary, kCreaseTetDihedral);
+    if (splits.empty()) splits = simplicesToSplit(mesh, t, surfaceCount, boundary);
+    simplices.insert(simplices.end(), splits.begin(), splits.end());
+  }
+  sortUnique(simplices);
   return simplices;
 }
 
@@ -445,8 +494,9 @@ CompatibleTetMeshes buildCompatibleTetMeshes(const TetMesh& rest, int surfaceVer
     CompatibleTetMeshes bestMeshes;
     int sinceBest = 0;
     while (best > 0 && sinceBest < kPatience && rounds < options.maxRounds) {
-      const std::vector<Simplex> simplices = simplicesFreeing(
-          meshes.rest, meshes.examples[k].invertedTets, surfaceVertexCount, boundary);
+      const std::vector<Simplex> simplices =
+          splitsForInverted(meshes.rest, meshes.examples[k].invertedTets, exampleSurfaces[k],
+                            triangles, surfaceVertexCount, boundary);
       if (simplices.empty()) break;
       if (sinceBest == 0) bestMeshes = meshes;
       if (!split(simplices, meshes)) break;
