@@ -6,17 +6,10 @@
 
 #include <Eigen/Geometry>
 
+#include "tetblend/core/constants.h"
+
 namespace tetblend {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
-
-Simplex edgeSimplex(int u, int v) {
-  Simplex edge;
-  edge.vertices = {std::min(u, v), std::max(u, v), 0};
-  edge.count = 2;
-  return edge;
-}
 
 // The components of c − a and d − a across the line through a along unit d.
 std::pair<Eigen::Vector3d, Eigen::Vector3d> acrossEdge(const Vertices& positions, int a,
@@ -62,7 +55,7 @@ std::vector<BoundaryEdgeRing> boundaryEdgeRings(const TetMesh& mesh, const Trian
   for (Eigen::Index f = 0; f < outward.rows(); ++f) {
     for (int i = 0; i < 3; ++i) {
       const int a = outward(f, i), b = outward(f, (i + 1) % 3), third = outward(f, (i + 2) % 3);
-      directed.push_back({edgeSimplex(a, b), a, b, third});
+      directed.push_back({makeSimplex({a, b}), a, b, third});
     }
   }
   std::sort(directed.begin(), directed.end(),
@@ -86,7 +79,7 @@ std::vector<BoundaryEdgeRing> boundaryEdgeRings(const TetMesh& mesh, const Trian
   for (Eigen::Index t = 0; t < mesh.tets.rows(); ++t) {
     for (int i = 0; i < 4; ++i) {
       for (int j = i + 1; j < 4; ++j) {
-        const Simplex edge = edgeSimplex(mesh.tets(t, i), mesh.tets(t, j));
+        const Simplex edge = makeSimplex({mesh.tets(t, i), mesh.tets(t, j)});
         const auto found = std::lower_bound(keys.begin(), keys.end(), edge);
         if (found != keys.end() && *found == edge) {
           rings[static_cast<std::size_t>(found - keys.begin())].tets.push_back(static_cast<int>(t));
@@ -118,7 +111,7 @@ std::vector<Simplex> creaseRingSplits(const TetMesh& mesh,
         const int v = mesh.tets(t, c);
         if (v != ring.a && v != ring.b) opposite[count++] = v;
       }
-      const Simplex edge = edgeSimplex(opposite[0], opposite[1]);
+      const Simplex edge = makeSimplex({opposite[0], opposite[1]});
       if (std::binary_search(boundary.edges.begin(), boundary.edges.end(), edge)) continue;
       const double angle =
           tetDihedralAngle(mesh.vertices, ring.a, ring.b, opposite[0], opposite[1]);

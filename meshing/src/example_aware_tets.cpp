@@ -17,6 +17,7 @@
 #include "surface_interior.h"
 #include "tet_stellar_split.h"
 #include "tetblend/core/blas_threads.h"
+#include "tetblend/core/constants.h"
 #include "tetblend/core/error.h"
 #include "tetblend/core/tet_geometry.h"
 #include "tetblend/meshing/self_intersection.h"
@@ -35,7 +36,7 @@ constexpr int kPatience = 2;
 // A tet's volume on given faces goes with the sine of that angle (½ at
 // 150°). The femur's crease (355° over 2 tets) is caught by any bound below
 // 177.5°; only 150° was measured (2026-11-29, the README's The untangler).
-constexpr double kCreaseTetDihedral = 150.0 * 3.14159265358979323846 / 180.0;
+constexpr double kCreaseTetDihedral = 150.0 * kPi / 180.0;
 
 // Working memory of one example's placement per rest tet, an upper bound:
 // a clean example that frees the whole interior holds the Newton untangler's

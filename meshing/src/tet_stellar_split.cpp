@@ -15,19 +15,6 @@ constexpr std::array<std::array<int, 2>, 6> kTetEdges = {
 constexpr std::array<std::array<int, 3>, 4> kTetFaces = {
     {{1, 2, 3}, {0, 2, 3}, {0, 1, 3}, {0, 1, 2}}};
 
-Simplex makeSimplex(std::initializer_list<int> vertices) {
-  Simplex simplex;
-  for (int v : vertices) {
-    // Insertion into the ascending prefix (at most 3 entries).
-    int i = simplex.count++;
-    for (; i > 0 && simplex.vertices[static_cast<size_t>(i - 1)] > v; --i) {
-      simplex.vertices[static_cast<size_t>(i)] = simplex.vertices[static_cast<size_t>(i - 1)];
-    }
-    simplex.vertices[static_cast<size_t>(i)] = v;
-  }
-  return simplex;
-}
-
 bool contains(const std::vector<Simplex>& sorted, const Simplex& simplex) {
   return std::binary_search(sorted.begin(), sorted.end(), simplex);
 }
@@ -41,6 +28,19 @@ std::string simplexText(const Simplex& simplex) {
 }
 
 }  // namespace
+
+Simplex makeSimplex(std::initializer_list<int> vertices) {
+  Simplex simplex;
+  for (int v : vertices) {
+    // Insertion into the ascending prefix (at most 3 entries).
+    int i = simplex.count++;
+    for (; i > 0 && simplex.vertices[static_cast<size_t>(i - 1)] > v; --i) {
+      simplex.vertices[static_cast<size_t>(i)] = simplex.vertices[static_cast<size_t>(i - 1)];
+    }
+    simplex.vertices[static_cast<size_t>(i)] = v;
+  }
+  return simplex;
+}
 
 bool Simplex::operator<(const Simplex& other) const {
   return count != other.count ? count < other.count : vertices < other.vertices;

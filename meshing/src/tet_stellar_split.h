@@ -8,6 +8,7 @@
 // faces are never split: the boundary is untouched and p is interior.
 
 #include <array>
+#include <initializer_list>
 #include <vector>
 
 #include "tetblend/core/mesh_types.h"
@@ -21,6 +22,9 @@ struct Simplex {
   bool operator<(const Simplex& other) const;
   bool operator==(const Simplex& other) const;
 };
+
+/// The edge or face through `vertices` (2 or 3 of them), ascending.
+Simplex makeSimplex(std::initializer_list<int> vertices);
 
 /// The boundary edges and faces of a tet mesh, sorted (the ones split never).
 struct BoundarySimplices {

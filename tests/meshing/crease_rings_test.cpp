@@ -13,13 +13,13 @@
 
 #include "crease_rings.h"
 #include "tet_stellar_split.h"
+#include "tetblend/core/constants.h"
 #include "tetblend/meshing/procedural_shapes.h"
 #include "tetblend/meshing/tet_boundary.h"
 
 namespace tetblend {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 // Angles from unit-scale coordinates: atan2 carries a few ulps, and acos is
 // well conditioned at the Kuhn tets' dihedral angles (45° to 120°, away from
 // 0 and π); 1e-12 rad is ~4500 ε.
@@ -120,9 +120,7 @@ TEST(CreaseRings, CrowdedRingsAreSplitOnceAndGainATet) {
     bool splittable = false;
     for (int t : ring.tets) {
       const auto [c, d] = oppositeCorners(mesh, t, ring.a, ring.b);
-      Simplex edge;
-      edge.vertices = {std::min(c, d), std::max(c, d), 0};
-      edge.count = 2;
+      const Simplex edge = makeSimplex({c, d});
       if (std::binary_search(splits.begin(), splits.end(), edge)) chosen.push_back(edge);
       splittable =
           splittable || !std::binary_search(boundary.edges.begin(), boundary.edges.end(), edge);
