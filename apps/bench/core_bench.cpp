@@ -1,11 +1,12 @@
 // Throughput of the Kaji–Ochiai kernels (one thread): so(3) exp/log, sym(3)
 // exp/log, phi and psi, each beside Eigen's MatrixFunctions (.exp()/.log(),
 // Padé with scaling and squaring / Schur–Parlett) in the same run, as in
-// Kaji–Ochiai §4.4 Table 1. Inputs are pre-generated pools of 1e6 random
+// Kaji–Ochiai §4.4 Table 1, and the polar rotation beside Eigen's SVD. Inputs are pre-generated pools of 1e6 random
 // values streamed in order, as in a per-element loop. Items = kernel calls.
 
 #include <benchmark/benchmark.h>
 
+#include <Eigen/SVD>
 #include <unsupported/Eigen/MatrixFunctions>
 
 #include <random>
@@ -29,6 +30,7 @@ struct CorePool {
   std::vector<Eigen::Matrix3d> spd;              // exp of the above
   std::vector<AffineParams> params;              // the three parts above, translation
   std::vector<Eigen::Matrix4d> affine;           // phi of the above
+  std::vector<Eigen::Matrix3d> linear;           // its linear parts (rotation × spd)
 };
 
 const CorePool& corePool() {
@@ -49,6 +51,7 @@ const CorePool& corePool() {
       p.spd.push_back(symExp(y));
       p.params.push_back({Eigen::Vector3d(u(rng), u(rng), u(rng)), w, y});
       p.affine.push_back(phi(p.params.back()));
+      p.linear.push_back(p.affine.back().topLeftCorner<3, 3>());
     }
     return p;
   }();
@@ -111,8 +114,18 @@ void BM_psi(benchmark::State& s) {
 // (one eigen-decomposition of A^T A serves both), then so(3) log of the
 // rotation (BM_so3_log, on the pool's rotations).
 void BM_psi_piece_polar_log(benchmark::State& s) {
-  runKernel(s, corePool().affine, [](const Eigen::Matrix4d& a) {
-    return polarDecomposeLog(a.topLeftCorner<3, 3>());
+  runKernel(s, corePool().affine,
+            [](const Eigen::Matrix4d& a) { return polarDecomposeLog(a.topLeftCorner<3, 3>()); });
+}
+// The polar rotation alone (ARAP's local step, compatible_tets.cpp).
+void BM_polar_rotation(benchmark::State& s) {
+  runKernel(s, corePool().linear,
+            [](const Eigen::Matrix3d& a) { return polarDecompose(a).rotation; });
+}
+void BM_polar_rotation_eigen(benchmark::State& s) {
+  runKernel(s, corePool().linear, [](const Eigen::Matrix3d& a) {
+    const Eigen::JacobiSVD<Eigen::Matrix3d> svd(a, Eigen::ComputeFullU | Eigen::ComputeFullV);
+    return Eigen::Matrix3d(svd.matrixU() * svd.matrixV().transpose());
   });
 }
 void BM_psi_eigen(benchmark::State& s) {
@@ -161,6 +174,9 @@ void BM_phi_batched(benchmark::State& s) {
 void BM_psi_batched(benchmark::State& s) {
   runBatched<Eigen::Matrix4d, AffineParams>(s, corePool().affine, psiBatch);
 }
+void BM_polar_rotation_batched(benchmark::State& s) {
+  runBatched<Eigen::Matrix3d, Eigen::Matrix3d>(s, corePool().linear, polarRotationBatch);
+}
 
 BENCHMARK(BM_so3_exp);
 BENCHMARK(BM_so3_exp_batched);
@@ -181,6 +197,9 @@ BENCHMARK(BM_psi);
 BENCHMARK(BM_psi_piece_polar_log);
 BENCHMARK(BM_psi_batched);
 BENCHMARK(BM_psi_eigen);
+BENCHMARK(BM_polar_rotation);
+BENCHMARK(BM_polar_rotation_batched);
+BENCHMARK(BM_polar_rotation_eigen);
 
 }  // namespace
 }  // namespace tetblend

@@ -272,6 +272,22 @@ void polarLogBlock(const Eigen::Matrix3d* a, PolarLogDecomposition* out, int n) 
   }
 }
 
+TETBLEND_BATCH_CLONES
+void polarRotationBlock(const Eigen::Matrix3d* a, Eigen::Matrix3d* out, int n) {
+  Block9 in, rot;
+  bool ok[kBlock];
+  for (int l = 0; l < n; ++l) loadMatrix(a[l], in, l);
+  padIdentity9(in, n);
+  for (int l = 0; l < kBlock; ++l) {
+    Mat r;
+    double v[3][3], sigma[3];
+    ok[l] = batch_detail::polarSvdLane(matAt(in, l), v, sigma, r);
+#pragma GCC unroll 9
+    for (int k = 0; k < 9; ++k) rot[k][l] = r.m[k];
+  }
+  for (int l = 0; l < n; ++l) out[l] = ok[l] ? matrixAt(rot, l) : polarDecompose(a[l]).rotation;
+}
+
 /// Runs `block` on consecutive blocks of kBlock elements.
 TETBLEND_BATCH_CLONES
 void so3ExpBlock(const Eigen::Vector3d* omega, Eigen::Matrix3d* out, int n) {
@@ -333,6 +349,10 @@ void phiLinearBatch(const double* logs, Eigen::Matrix3d* out, std::size_t n) {
 
 void polarDecomposeLogBatch(const Eigen::Matrix3d* a, PolarLogDecomposition* out, std::size_t n) {
   forEachBlock(a, out, n, polarLogBlock);
+}
+
+void polarRotationBatch(const Eigen::Matrix3d* a, Eigen::Matrix3d* out, std::size_t n) {
+  forEachBlock(a, out, n, polarRotationBlock);
 }
 
 }  // namespace tetblend

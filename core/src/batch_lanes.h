@@ -79,8 +79,9 @@ TETBLEND_LANE bool symExpLane(const Sym& y, Sym& out) {
   // scalar kernel's closed-form range, so the rest goes to its fallback.
   static_assert(sym3_detail::kExpDirectMaxArg <= lane_math::kExpMaxArg &&
                 sym3_detail::kExpDirectMaxSpread <= lane_math::kExpMaxArg);
-  const bool ok = (std::max(std::abs(lambda1), std::abs(lambda3)) <= sym3_detail::kExpDirectMaxArg) &
-                  (h <= sym3_detail::kExpDirectMaxSpread);
+  const bool ok =
+      (std::max(std::abs(lambda1), std::abs(lambda3)) <= sym3_detail::kExpDirectMaxArg) &
+      (h <= sym3_detail::kExpDirectMaxSpread);
   double e2, unused, em1, em3;
   lane_math::expExpm1Lane(ok ? lambda2 : 0.0, e2, unused);
   lane_math::expExpm1Lane(ok ? l1 : 0.0, unused, em1);
@@ -177,11 +178,12 @@ TETBLEND_LANE double dotLane(const double a[3], const double b[3]) {
   return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
 }
 
-/// polar_detail::polarLogClosedForm (polar.cpp) on a (row-major): the
-/// rotation factor and log S. False where the scalar psi must decide (det
-/// outside [kUnscaledMinDet, kUnscaledMaxDet], including det <= 0 and
+/// The factors of polar_detail::svdClosedForm (polar.cpp) on a (row-major):
+/// v[j] and u[j] the j-th columns of V and U, sigma[j] = |A v_j|, and the
+/// polar rotation rot = U V^T. False where the scalar kernels must decide
+/// (det outside [kUnscaledMinDet, kUnscaledMaxDet], including det <= 0 and
 /// non-finite; cond > kClosedFormMaxCond; residual check failed).
-TETBLEND_LANE bool polarLogLane(const Mat& am, Mat& rot, Sym& logS) {
+TETBLEND_LANE bool polarSvdLane(const Mat& am, double v[3][3], double sigma[3], Mat& rot) {
   const double* a = am.m;
   const double det = a[0] * (a[4] * a[8] - a[5] * a[7]) - a[1] * (a[3] * a[8] - a[5] * a[6]) +
                      a[2] * (a[3] * a[7] - a[4] * a[6]);
@@ -242,14 +244,13 @@ TETBLEND_LANE bool polarLogLane(const Mat& am, Mat& rot, Sym& logS) {
   crossLane(w, middle, other);
 #pragma GCC unroll 9
   for (double& x : other) x = top ? x : -x;
-  double v[3][3];  // v[j] = column j of V
 #pragma GCC unroll 9
   for (int i = 0; i < 3; ++i) {
     v[0][i] = distinct ? (top ? w[i] : other[i]) : (i == 0 ? 1.0 : 0.0);
     v[1][i] = distinct ? middle[i] : (i == 1 ? 1.0 : 0.0);
     v[2][i] = distinct ? (top ? other[i] : w[i]) : (i == 2 ? 1.0 : 0.0);
   }
-  double av[3][3], sigma[3];
+  double av[3][3];
 #pragma GCC unroll 9
   for (int j = 0; j < 3; ++j) {
 #pragma GCC unroll 9
@@ -282,8 +283,16 @@ TETBLEND_LANE bool polarLogLane(const Mat& am, Mat& rot, Sym& logS) {
     }
   }
   constexpr double kTol = polar_detail::kClosedFormMaxResidual;
-  const bool ok = inRange & ((bestNorm > 0.0) | (mu1 <= mu3)) & (residual2 <= kTol * kTol * norm2) &
-                  (sigma[2] >= kMinNormal);
+  return inRange & ((bestNorm > 0.0) | (mu1 <= mu3)) & (residual2 <= kTol * kTol * norm2) &
+         (sigma[2] >= kMinNormal);
+}
+
+/// polar_detail::polarLogClosedForm (polar.cpp) on a (row-major): the
+/// rotation factor and log S. False where the scalar psi must decide (as
+/// polarSvdLane).
+TETBLEND_LANE bool polarLogLane(const Mat& am, Mat& rot, Sym& logS) {
+  double v[3][3], sigma[3];
+  const bool ok = polarSvdLane(am, v, sigma, rot);
   double logSigma[3];
 #pragma GCC unroll 9
   for (int j = 0; j < 3; ++j) logSigma[j] = lane_math::logLane(ok ? sigma[j] : 1.0);

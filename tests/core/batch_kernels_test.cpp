@@ -12,6 +12,8 @@
 #include <random>
 #include <vector>
 
+#include <Eigen/SVD>
+
 #include "core_test_support.h"
 #include "test_seed.h"
 #include "tetblend/core/constants.h"
@@ -76,8 +78,8 @@ TEST(BatchKernels, So3ExpMatchesScalar) {
   // Zero, tiny angles, both sides of the Taylor switch kSmallAngle, pi, turns
   // beyond 2 pi, both sides of the lanes' sin/cos range (the scalar kernel
   // takes over above it) and a huge angle.
-  for (double theta : {0.0, 1e-12, 0.5 * small, 2.0 * small, 1.0, kPi, 7.0, 40.0,
-                       0.999 * laneMax, 1.001 * laneMax, 1e155}) {
+  for (double theta : {0.0, 1e-12, 0.5 * small, 2.0 * small, 1.0, kPi, 7.0, 40.0, 0.999 * laneMax,
+                       1.001 * laneMax, 1e155}) {
     in.push_back(theta * axis);
   }
   std::normal_distribution<double> normal;
@@ -270,6 +272,39 @@ TEST(BatchKernels, PolarDecomposeLogMatchesScalarAndThrowsLikeIt) {
   EXPECT_THROW(polarDecomposeLogBatch(in.data(), out.data(), in.size()), DomainError);
 }
 
+/// The polar rotation's forward error per unit of relative backward error:
+/// perturbing A by dA moves R by about |dA| / (sigma_2 + sigma_3) (Higham,
+/// Functions of Matrices, Thm. 8.9), i.e. cond(A) / 2 relative; the SVD
+/// oracle and the lanes each carry a backward error of a few ulps.
+constexpr double kRotationUlpsPerCond = 16 * 2.220446049250313e-16;
+
+TEST(BatchKernels, PolarRotationMatchesScalarAndAnSvdAndThrowsLikeIt) {
+  std::mt19937 rng(seed("PolarRotationMatchesScalarAndAnSvdAndThrowsLikeIt"));
+  std::vector<Eigen::Matrix3d> in;
+  for (const Eigen::Matrix4d& a : psiInputs(rng)) in.push_back(a.topLeftCorner<3, 3>());
+  // det outside [kUnscaledMinDet, kUnscaledMaxDet]: the scalar kernel rescales.
+  in.push_back(1e-40 * randomRotation(rng, kPi));
+  in.push_back(1e40 * randomRotation(rng, kPi) * withEigenvalues(rng, {2.0, 1.0, 0.5}));
+  std::vector<Eigen::Matrix3d> out(in.size());
+  polarRotationBatch(in.data(), out.data(), in.size());
+  for (std::size_t i = 0; i < in.size(); ++i) {
+    EXPECT_LE(relativeGap(out[i], polarDecompose(in[i]).rotation), kBatchVsScalarTol)
+        << "element " << i;
+    // Independent oracle: U V^T of Eigen's Jacobi SVD (det A > 0 here, so no
+    // reflection to remove).
+    const Eigen::JacobiSVD<Eigen::Matrix3d> svd(in[i], Eigen::ComputeFullU | Eigen::ComputeFullV);
+    const Eigen::Vector3d sigma = svd.singularValues();
+    const Eigen::Matrix3d want = svd.matrixU() * svd.matrixV().transpose();
+    EXPECT_LE((out[i] - want).norm(),
+              kBatchVsScalarTol + kRotationUlpsPerCond * sigma(0) / sigma(2))
+        << "element " << i;
+    EXPECT_LE((out[i].transpose() * out[i] - Eigen::Matrix3d::Identity()).norm(), kBatchVsScalarTol)
+        << "element " << i;
+  }
+  in[in.size() - 3] = Eigen::Vector3d(1.0, 1.0, -1.0).asDiagonal();
+  EXPECT_THROW(polarRotationBatch(in.data(), out.data(), in.size()), DomainError);
+}
+
 /// kBatchVsScalarTol plus the relative error exp makes of the rounding of its
 /// argument, a few ulps of the largest |eigenvalue| (lanes and libm round
 /// eigenvalues near 700 differently).
@@ -302,14 +337,14 @@ TEST(BatchKernels, ExtremeSpreadsAndScalesMatchScalar) {
     ASSERT_TRUE(e[i].allFinite()) << "element " << i;
     EXPECT_LE(relativeGap(e[i], symExp(y[i])), extremeTol(y[i])) << "element " << i;
     // Every other rotation log beyond the double range of its square.
-    params.push_back({Eigen::Vector3d::Zero(), Eigen::Vector3d(i % 2 ? 1e155 : 0.5, 0.0, 0.0), y[i]});
+    params.push_back(
+        {Eigen::Vector3d::Zero(), Eigen::Vector3d(i % 2 ? 1e155 : 0.5, 0.0, 0.0), y[i]});
   }
   std::vector<Eigen::Matrix4d> a(params.size());
   phiBatch(params.data(), a.data(), params.size());
   for (std::size_t i = 0; i < params.size(); ++i) {
     ASSERT_TRUE(a[i].allFinite()) << "element " << i;
-    EXPECT_LE(relativeGap(a[i], phi(params[i])), extremeTol(y[i]))
-        << "element " << i;
+    EXPECT_LE(relativeGap(a[i], phi(params[i])), extremeTol(y[i])) << "element " << i;
   }
   y[y.size() / 2] = Eigen::Vector3d(720, 0, 0).asDiagonal();
   EXPECT_THROW(symExpBatch(y.data(), e.data(), y.size()), DomainError);
@@ -321,7 +356,8 @@ TEST(BatchKernels, ExtremeSpreadsAndScalesMatchScalar) {
   for (int j = -300; j <= 300; j += 25) {
     const double c = std::pow(10.0, j);
     linear.push_back(c * withEigenvalues(rng, Eigen::Vector3d(3.0, 1.0, 1.0)));
-    linear.push_back(c * randomRotation(rng, kPi) * withEigenvalues(rng, Eigen::Vector3d(2, 1, 0.1)));
+    linear.push_back(c * randomRotation(rng, kPi) *
+                     withEigenvalues(rng, Eigen::Vector3d(2, 1, 0.1)));
     stretch.push_back(c * withEigenvalues(rng, Eigen::Vector3d(3.0, 1.0, 0.5)));
   }
   linear.push_back(Eigen::Vector3d(1.0, 1.0, 1e-310).asDiagonal());

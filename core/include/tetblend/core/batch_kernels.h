@@ -1,16 +1,14 @@
 #pragma once
 // Batched versions of the per-element kernels for whole meshes: so3Log,
-// symExp, symLog, phi and psi over arrays. Each element's result equals the
-// scalar kernel's to a few ulps times the kernel's conditioning (the lanes use
-// the same formulas, thresholds and branches, with lane_math.h's polynomials
-// for exp/log/atan2/sin/cos). Internally the elements are transposed in
-// blocks into structure-of-arrays form and processed by a loop that GCC
-// vectorises; the best of AVX-512, AVX2+FMA or baseline code is chosen at run
-// time (function multi-versioning), so the library stays portable. Elements
-// the lanes do not cover (arguments outside the lane_math ranges, the scalar
-// kernels' fallback branches, errors) are recomputed by the scalar kernel, so
-// the batched call throws exactly what the scalar loop would throw, for the
-// first such element.
+// symExp, symLog, phi, psi and the polar decomposition over arrays. Each element's result equals
+// the scalar kernel's to a few ulps times the kernel's conditioning (the lanes use the same
+// formulas, thresholds and branches, with lane_math.h's polynomials for exp/log/atan2/sin/cos).
+// Internally the elements are transposed in blocks into structure-of-arrays form and processed by a
+// loop that GCC vectorises; the best of AVX-512, AVX2+FMA or baseline code is chosen at run time
+// (function multi-versioning), so the library stays portable. Elements the lanes do not cover
+// (arguments outside the lane_math ranges, the scalar kernels' fallback branches, errors) are
+// recomputed by the scalar kernel, so the batched call throws exactly what the scalar loop would
+// throw, for the first such element.
 //
 // Input and output arrays hold n elements each and must not overlap.
 
@@ -58,5 +56,11 @@ void phiLinearBatch(const double* logs, Eigen::Matrix3d* out, std::size_t n);
 /// log S (Kaji–Ochiai eq. (3)) without the rotation log. Throws DomainError
 /// like polarDecomposeLog if some det a[i] <= 0.
 void polarDecomposeLogBatch(const Eigen::Matrix3d* a, PolarLogDecomposition* out, std::size_t n);
+
+/// out[i] = polarDecompose(a[i]).rotation (3x3, det > 0): the rotation
+/// closest to a[i] (ARAP's local step). Throws DomainError like
+/// polarDecompose if some det a[i] <= 0, NumericalError if its iteration
+/// fails for an element the closed form declines.
+void polarRotationBatch(const Eigen::Matrix3d* a, Eigen::Matrix3d* out, std::size_t n);
 
 }  // namespace tetblend
