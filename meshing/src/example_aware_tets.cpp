@@ -390,8 +390,8 @@ CompatibleTetMeshes buildCompatibleTetMeshes(const TetMesh& rest, int surfaceVer
   };
   CompatibleTetMeshes meshes;
   meshes.rest = rest;
-  const BoundarySimplices boundary = boundarySimplices(rest);
   const Triangles triangles = boundarySurface(rest).triangles;
+  const BoundarySimplices boundary = boundarySimplices(triangles);
   const std::vector<int> vertexComponent = vertexComponents(rest);
   const std::vector<int> faceComponent = faceComponents(triangles, vertexComponent);
   meshes.selfIntersections.resize(exampleSurfaces.size());

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <array>
+#include <cstddef>
+#include <numeric>
 #include <string>
 #include <utility>
 #include <vector>
@@ -19,24 +21,50 @@ constexpr std::array<std::array<int, 3>, 4> kOutwardFaces = {
 }  // namespace
 
 SurfaceMesh boundarySurface(const TetMesh& mesh) {
-  // (sorted corners, tet, local face) for every face; equal keys are adjacent
-  // after sorting.
+  // (sorted corners, outward corners) for every face, grouped by the
+  // smallest corner (a counting sort over the vertices) and sorted within
+  // each group: equal keys are adjacent, in ascending order. Linear but for
+  // the small groups' sorts (about 20 faces each): a sort of all 4 #T faces
+  // was 3 % of a 100 k-tet preparation's profile, called 3 times.
   struct Face {
     std::array<int, 3> key;
     std::array<int, 3> oriented;
   };
-  std::vector<Face> faces;
-  faces.reserve(static_cast<size_t>(mesh.tets.rows()) * 4);
+  const Eigen::Index vertexCount = mesh.vertices.rows();
   for (Eigen::Index t = 0; t < mesh.tets.rows(); ++t) {
-    for (const auto& local : kOutwardFaces) {
-      Face face;
-      for (int k = 0; k < 3; ++k) face.oriented[k] = mesh.tets(t, local[k]);
-      face.key = face.oriented;
-      std::sort(face.key.begin(), face.key.end());
-      faces.push_back(face);
+    for (int a = 0; a < 4; ++a) {
+      if (mesh.tets(t, a) < 0 || mesh.tets(t, a) >= vertexCount) {
+        throw InputError("boundarySurface: tet " + std::to_string(t) + " has corner " +
+                         std::to_string(mesh.tets(t, a)) + ", not a vertex of the mesh's " +
+                         std::to_string(vertexCount));
+      }
     }
   }
-  std::sort(faces.begin(), faces.end(), [](const Face& a, const Face& b) { return a.key < b.key; });
+  auto faceOf = [&](Eigen::Index t, const std::array<int, 3>& local) {
+    Face face;
+    for (int k = 0; k < 3; ++k) face.oriented[k] = mesh.tets(t, local[k]);
+    face.key = face.oriented;
+    std::sort(face.key.begin(), face.key.end());
+    return face;
+  };
+  std::vector<std::size_t> groupStart(static_cast<std::size_t>(vertexCount) + 1, 0);
+  for (Eigen::Index t = 0; t < mesh.tets.rows(); ++t) {
+    for (const auto& local : kOutwardFaces) ++groupStart[faceOf(t, local).key[0] + 1];
+  }
+  std::partial_sum(groupStart.begin(), groupStart.end(), groupStart.begin());
+  std::vector<Face> faces(groupStart.back());
+  std::vector<std::size_t> next(groupStart.begin(), groupStart.end() - 1);
+  for (Eigen::Index t = 0; t < mesh.tets.rows(); ++t) {
+    for (const auto& local : kOutwardFaces) {
+      const Face face = faceOf(t, local);
+      faces[next[static_cast<std::size_t>(face.key[0])]++] = face;
+    }
+  }
+  for (std::size_t v = 0; v + 1 < groupStart.size(); ++v) {
+    std::sort(faces.begin() + static_cast<std::ptrdiff_t>(groupStart[v]),
+              faces.begin() + static_cast<std::ptrdiff_t>(groupStart[v + 1]),
+              [](const Face& a, const Face& b) { return a.key < b.key; });
+  }
   std::vector<std::array<int, 3>> boundary;
   for (size_t i = 0; i < faces.size();) {
     size_t j = i;

@@ -50,8 +50,7 @@ bool Simplex::operator==(const Simplex& other) const {
   return count == other.count && vertices == other.vertices;
 }
 
-BoundarySimplices boundarySimplices(const TetMesh& mesh) {
-  const Triangles triangles = boundarySurface(mesh).triangles;
+BoundarySimplices boundarySimplices(const Triangles& triangles) {
   BoundarySimplices boundary;
   for (Eigen::Index f = 0; f < triangles.rows(); ++f) {
     const int a = triangles(f, 0), b = triangles(f, 1), c = triangles(f, 2);

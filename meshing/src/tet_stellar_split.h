@@ -32,8 +32,9 @@ struct BoundarySimplices {
   std::vector<Simplex> faces;
 };
 
-/// The boundary triangles' edges and faces of `mesh` (faces of one tet only).
-BoundarySimplices boundarySimplices(const TetMesh& mesh);
+/// The edges and faces of a tet mesh's boundary triangles (boundarySurface's;
+/// faces of one tet only).
+BoundarySimplices boundarySimplices(const Triangles& triangles);
 
 /// What to split so tet `tet` of `mesh` is replaced by tets with a movable
 /// vertex (one >= `surfaceCount`): its interior edges joining two surface

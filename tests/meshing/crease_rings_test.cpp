@@ -105,7 +105,7 @@ TEST(CreaseRings, InteriorAngleOfEveryBoundaryEdgeIsTheSumOfItsTetsAngles) {
 TEST(CreaseRings, CrowdedRingsAreSplitOnceAndGainATet) {
   const TetMesh mesh = lBlock();
   const Triangles outward = boundarySurface(mesh).triangles;
-  const BoundarySimplices boundary = boundarySimplices(mesh);
+  const BoundarySimplices boundary = boundarySimplices(outward);
   const std::vector<BoundaryEdgeRing> rings = boundaryEdgeRings(mesh, outward);
   // A per-tet bound of 80°: the reflex edge (270°) and convex edges with
   // one tet (90°) are crowded, flat edges with two tets are not.

@@ -67,5 +67,15 @@ TEST(TetBoundary, FaceSharedByThreeTetsIsRejected) {
   EXPECT_THROW(boundarySurface(mesh), InputError);
 }
 
+TEST(TetBoundary, CornerOutsideTheVerticesIsRejected) {
+  TetMesh mesh;
+  mesh.vertices = Vertices::Random(4, 3);
+  mesh.tets.resize(1, 4);
+  for (int bad : {4, -1}) {
+    mesh.tets << 0, 1, 2, bad;
+    EXPECT_THROW(boundarySurface(mesh), InputError) << "corner " << bad;
+  }
+}
+
 }  // namespace
 }  // namespace tetblend

@@ -14,7 +14,8 @@ namespace tetblend {
 /// outwards (counter-clockwise seen from outside) given positively oriented
 /// tets. The returned SurfaceMesh holds all of mesh.vertices (#V by 3) and
 /// its triangles index them, so interior vertices are present but unused.
-/// Throws InputError if a face is shared by more than two tets.
+/// Throws InputError if a face is shared by more than two tets, or if a
+/// tet's corner is not a row of mesh.vertices.
 SurfaceMesh boundarySurface(const TetMesh& mesh);
 
 /// A tet mesh renumbered so its boundary vertices come first.
