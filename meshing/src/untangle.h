@@ -25,7 +25,7 @@ namespace tetblend {
 
 struct UntangleOutcome {
   int rounds = 0;       ///< outer (ε-decrease) rounds performed
-  double minDet = 0.0;  ///< smallest det F_t at the end (unitless)
+  double minDet = 0.0;  ///< smallest det F_t of the state returned (unitless)
 };
 
 /// The free vertices for untangling the given tets (the caller's rings
@@ -39,7 +39,9 @@ using FreeRegionAround = std::function<std::vector<int>(const std::vector<int>& 
 /// det F > 0, or after effort.maxRounds rounds of at most
 /// effort.iterationsPerRound Newton steps each, or when it stalls
 /// (effort.maxRings is the caller's). With `regionAround`, the free region
-/// narrows as the inverted tets become few.
+/// narrows as the inverted tets become few. `positions` ends at the best
+/// state reached (fewest inverted tets, then the largest min det F), which
+/// outcome.minDet describes.
 UntangleOutcome untangle(const Tets& tets, const std::vector<TetElement>& elements,
                          const std::vector<int>& freeVertices, const UntangleEffort& effort,
                          Vertices& positions, const FreeRegionAround& regionAround = {});

@@ -5,10 +5,15 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
+#include <cmath>
+#include <iostream>
 #include <set>
 #include <utility>
 #include <vector>
+
+#include <Eigen/LU>
 
 #include "tet_elements.h"
 #include "tetblend/core/tet_geometry.h"
@@ -150,6 +155,41 @@ TEST(Untangle, NarrowingTheRegionToTheLastInvertedTetsStillUntanglesThem) {
       EXPECT_EQ(positions.row(v), start.row(v)) << "vertex " << v;
     }
   }
+}
+
+// A fold the untangler cannot repair: the centre of the grid's top face
+// (3 × 3 fixed vertices) pushed down through the interior and out of the
+// bottom face (the surface then intersects itself). Rounds that relax the
+// region around it invert more tets (54 at the start, 384 after the 40th
+// round when the last state was returned); the state returned must be the
+// best one reached, no worse than the start.
+TEST(Untangle, AHopelessFoldComesBackNoWorseThanItStarted) {
+  const TetMesh mesh = kuhnGrid();
+  const std::vector<TetElement> elements = buildTetElements(mesh);
+  Vertices positions = mesh.vertices;
+  for (int i = 3; i <= 5; ++i)
+    for (int j = 3; j <= 5; ++j) positions(vertexIndex(i, j, kCells), 2) -= (kCells + 2.0) / kCells;
+  const std::vector<int> before = invertedTets(positions, mesh.tets);
+  ASSERT_FALSE(before.empty());
+  double minDetBefore = INFINITY;
+  for (Eigen::Index t = 0; t < mesh.tets.rows(); ++t) {
+    minDetBefore = std::min(minDetBefore, deformationGradient(positions, mesh.tets.row(t),
+                                                              elements[static_cast<size_t>(t)])
+                                              .determinant());
+  }
+  UntangleEffort brief;  // ExampleAwareOptions::intersectingUntangle's, 8 stalled rounds
+  brief.iterationsPerRound = 1;
+  brief.maxRounds = 40;
+  brief.minDetProgress = 1e-3;
+  brief.stallRounds = brief.firstAttemptStallRounds = 8;
+  const UntangleOutcome outcome =
+      untangle(mesh.tets, elements, interiorVertices(mesh), brief, positions);
+  const std::vector<int> after = invertedTets(positions, mesh.tets);
+  std::cout << "  " << before.size() << " inverted tets, min det F " << minDetBefore << " -> "
+            << after.size() << ", " << outcome.minDet << " after " << outcome.rounds << " rounds\n";
+  EXPECT_FALSE(after.empty());
+  EXPECT_TRUE(after.size() < before.size() ||
+              (after.size() == before.size() && outcome.minDet >= minDetBefore));
 }
 
 }  // namespace
