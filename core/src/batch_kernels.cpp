@@ -77,6 +77,11 @@ inline Mat matAt(const Block9& b, int l) {
   return m;
 }
 
+inline void storeMat(const Mat& m, Block9& b, int l) {
+#pragma GCC unroll 9
+  for (int k = 0; k < 9; ++k) b[k][l] = m.m[k];
+}
+
 inline Sym symAt(const Block6& b, int l) {
   return {b[0][l], b[1][l], b[2][l], b[3][l], b[4][l], b[5][l]};
 }
@@ -235,8 +240,7 @@ void psiBlock(const Eigen::Matrix4d* a, AffineParams* out, int n) {
     Sym ls;
     ok[l] = batch_detail::polarLogLane(matAt(in, l), r, ls);
     storeSym(ls, logS, l);
-#pragma GCC unroll 9
-    for (int k = 0; k < 9; ++k) rot[k][l] = r.m[k];
+    storeMat(r, rot, l);
   }
   for (int l = 0; l < kBlock; ++l) {
     double wl[3];
@@ -263,8 +267,7 @@ void polarLogBlock(const Eigen::Matrix3d* a, PolarLogDecomposition* out, int n) 
     Sym ls;
     ok[l] = batch_detail::polarLogLane(matAt(in, l), r, ls);
     storeSym(ls, logS, l);
-#pragma GCC unroll 9
-    for (int k = 0; k < 9; ++k) rot[k][l] = r.m[k];
+    storeMat(r, rot, l);
   }
   for (int l = 0; l < n; ++l) {
     out[l] =
@@ -282,8 +285,7 @@ void polarRotationBlock(const Eigen::Matrix3d* a, Eigen::Matrix3d* out, int n) {
     Mat r;
     double v[3][3], sigma[3];
     ok[l] = batch_detail::polarSvdLane(matAt(in, l), v, sigma, r);
-#pragma GCC unroll 9
-    for (int k = 0; k < 9; ++k) rot[k][l] = r.m[k];
+    storeMat(r, rot, l);
   }
   for (int l = 0; l < n; ++l) out[l] = ok[l] ? matrixAt(rot, l) : polarDecompose(a[l]).rotation;
 }
@@ -301,8 +303,7 @@ void so3ExpBlock(const Eigen::Vector3d* omega, Eigen::Matrix3d* out, int n) {
   for (int l = 0; l < kBlock; ++l) {
     Mat r;
     ok[l] = batch_detail::so3ExpLane(in[0][l], in[1][l], in[2][l], r);
-#pragma GCC unroll 9
-    for (int k = 0; k < 9; ++k) res[k][l] = r.m[k];
+    storeMat(r, res, l);
   }
   for (int l = 0; l < n; ++l) out[l] = ok[l] ? matrixAt(res, l) : so3Exp(omega[l]);
 }
