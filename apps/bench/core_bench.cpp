@@ -1,8 +1,9 @@
 // Throughput of the Kaji–Ochiai kernels (one thread): so(3) exp/log, sym(3)
 // exp/log, phi and psi, each beside Eigen's MatrixFunctions (.exp()/.log(),
 // Padé with scaling and squaring / Schur–Parlett) in the same run, as in
-// Kaji–Ochiai §4.4 Table 1, and the polar rotation beside Eigen's SVD. Inputs are pre-generated pools of 1e6 random
-// values streamed in order, as in a per-element loop. Items = kernel calls.
+// Kaji–Ochiai §4.4 Table 1, and the polar rotation beside Eigen's SVD.
+// Inputs are pre-generated pools of 1e6 random values streamed in order, as
+// in a per-element loop. Items = kernel calls.
 
 #include <benchmark/benchmark.h>
 
