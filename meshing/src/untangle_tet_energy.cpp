@@ -1,5 +1,6 @@
 #include "untangle_tet_energy.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -110,31 +111,24 @@ double untangleTetEnergy(const Eigen::Matrix3d& f, double epsilon, Eigen::Matrix
 //   flip  U (e_i e_jᵀ + e_j e_iᵀ) Vᵀ / √2: λ = 2 ψ_2 − ψ_3 σ_k,
 // and the scalings U diag(a) Vᵀ, whose block in the basis U e_i e_iᵀ Vᵀ is S,
 // the 3 by 3 Hessian of ψ(Σ σ_i², σ_0 σ_1 σ_2) in σ (ψ_22 = 0 here). An
-// eigenvector Q maps to the corners as Q G, so U M Vᵀ G = U M P with
-// P = Vᵀ G: the corner Hessian is Σ λ vec(Q G) vec(Q G)ᵀ, built in 12
-// dimensions without forming the 9 by 9 one. S is projected through its own
+// eigenvector Q maps to the corners as Q G = U M P with P = Vᵀ G, so every
+// 3 by 3 block of the corner Hessian is U M_ab Uᵀ, with M_ab (corners a, b)
+// summed in U's frame from P's entries and the eigenvalues:
+//   M_ab[i][i] = S_ii P_ia P_ib + Σ_{j≠i} (λ_twist,k + λ_flip,k)/2 P_ja P_jb,
+//   M_ab[i][j] = S_ij P_ia P_jb + (λ_flip,k − λ_twist,k)/2 P_ja P_ib  (i ≠ j),
+// k the index other than i and j. S is projected through its own
 // eigendecomposition only when it is not positive definite.
 Matrix12d untangleCornerHessian(const Eigen::Matrix3d& f, const Eigen::Matrix<double, 3, 4>& g,
                                 double epsilon, bool projected) {
-  using CornerMatrix = Eigen::Matrix<double, 3, 4>;
   Eigen::Matrix3d u;
   Eigen::Matrix3d v;
   Eigen::Vector3d sigma;
   rotationVariantSvd(f, u, sigma, v);
   const Psi p = psi(sigma.squaredNorm(), sigma.prod(), epsilon, /*second=*/true);
-  const CornerMatrix pv = v.transpose() * g;
+  const Eigen::Matrix<double, 3, 4> pv = v.transpose() * g;
 
-  Matrix12d h;
-  auto add = [&](double lambda, const CornerMatrix& w) {  // w = Q G
-    if (projected && lambda <= 0.0) return;
-    const Eigen::Map<const Eigen::Matrix<double, 12, 1>> vecW(w.data());
-    h.noalias() += lambda * vecW * vecW.transpose();
-  };
   Eigen::Matrix3d scaling;  // S
-  Eigen::Matrix<double, 12, 3> diagonalBasis;  // vec(U e_i e_iᵀ Vᵀ G) = vec(u_i p_iᵀ)
   for (int i = 0; i < 3; ++i) {
-    const CornerMatrix w = u.col(i) * pv.row(i);
-    diagonalBasis.col(i) = Eigen::Map<const Eigen::Matrix<double, 12, 1>>(w.data());
     const double product = sigma((i + 1) % 3) * sigma((i + 2) % 3);  // ∂I3/∂σ_i
     for (int l = 0; l <= i; ++l) {
       const double otherProduct = sigma((l + 1) % 3) * sigma((l + 2) % 3);
@@ -149,16 +143,40 @@ Matrix12d untangleCornerHessian(const Eigen::Matrix3d& f, const Eigen::Matrix<do
     scaling = eigen.eigenvectors() * eigen.eigenvalues().cwiseMax(0.0).asDiagonal() *
               eigen.eigenvectors().transpose();
   }
-  const Eigen::Matrix<double, 12, 3> scaled = diagonalBasis * scaling;
-  h.noalias() = scaled.lazyProduct(diagonalBasis.transpose());  // no GEMM kernel for 12×3×12
-  const double halfRoot2 = std::sqrt(0.5);
+  // Per k: the mean of the twist and flip eigenvalues (the weight of
+  // P_j P_jᵀ on M's diagonal) and half their difference (off it).
+  Eigen::Vector3d mean;
+  Eigen::Vector3d halfDifference;
   for (int k = 0; k < 3; ++k) {
-    const int i = (k + 1) % 3;
-    const int l = (k + 2) % 3;
-    const CornerMatrix outer = halfRoot2 * u.col(i) * pv.row(l);
-    const CornerMatrix inner = halfRoot2 * u.col(l) * pv.row(i);
-    add(2.0 * p.s + p.j * sigma(k), outer - inner);
-    add(2.0 * p.s - p.j * sigma(k), outer + inner);
+    double twist = 2.0 * p.s + p.j * sigma(k);
+    double flip = 2.0 * p.s - p.j * sigma(k);
+    if (projected) {
+      twist = std::max(twist, 0.0);
+      flip = std::max(flip, 0.0);
+    }
+    mean(k) = 0.5 * (twist + flip);
+    halfDifference(k) = 0.5 * (flip - twist);
+  }
+  Matrix12d h;
+  for (int b = 0; b < 4; ++b) {
+    for (int a = b; a < 4; ++a) {
+      const Eigen::Vector3d pa = pv.col(a);
+      const Eigen::Vector3d pb = pv.col(b);
+      const Eigen::Vector3d same = pa.cwiseProduct(pb);  // P_ja P_jb
+      Eigen::Matrix3d m = scaling.cwiseProduct(pa * pb.transpose());
+      m(0, 0) += mean(2) * same(1) + mean(1) * same(2);
+      m(1, 1) += mean(0) * same(2) + mean(2) * same(0);
+      m(2, 2) += mean(1) * same(0) + mean(0) * same(1);
+      m(0, 1) += halfDifference(2) * pa(1) * pb(0);
+      m(1, 0) += halfDifference(2) * pa(0) * pb(1);
+      m(0, 2) += halfDifference(1) * pa(2) * pb(0);
+      m(2, 0) += halfDifference(1) * pa(0) * pb(2);
+      m(1, 2) += halfDifference(0) * pa(2) * pb(1);
+      m(2, 1) += halfDifference(0) * pa(1) * pb(2);
+      const Eigen::Matrix3d block = u * m * u.transpose();
+      h.block<3, 3>(3 * a, 3 * b) = block;
+      if (a != b) h.block<3, 3>(3 * b, 3 * a) = block.transpose();
+    }
   }
   return h;
 }
