@@ -6,7 +6,7 @@
 # frames come from tools/pose_rehearsal.py's own write_frames (frames.py),
 # without the rehearsal's prepare run. The CGAL demo meshes are unpacked from
 # /usr/share/doc/libcgal-demo/data.tar.gz into DATA_DIR/cgal once.
-# The README names no mesh lists for the holed sets; taken here: the 4-holes
+# The README never named the holed sets' meshes; these lists fix them: the 4-holes
 # set = the 10 meshes of the corpus, the twists and the harsh set (cactus
 # eight knot1 elephant hand handle dino femur homer triceratops) + armadillo
 # ("now with the holed armadillo"); the 3-large-holes set = the same 11 +
