@@ -19,12 +19,7 @@ HERE=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 REPO=$(cd "$HERE/../.." && pwd)
 mkdir -p "${1:?usage: generate.sh DATA_DIR [TETBLEND]}"
 D=$(cd "$1" && pwd)
-TB=${2:-}
-if [ -z "$TB" ]; then
-  for c in "$REPO/build/release/apps/tetblend" "$REPO/build/release/tetblend"; do
-    [ -x "$c" ] && TB=$c && break
-  done
-fi
+TB=${2:-$REPO/build/release/apps/tetblend}
 [ -x "$TB" ] || { echo "no tetblend binary" >&2; exit 1; }
 M=$D/cgal/data/meshes
 if [ ! -d "$M" ]; then

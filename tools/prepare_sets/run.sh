@@ -7,7 +7,7 @@
 # Usage: bash tools/prepare_sets/run.sh DATA_DIR OUT_DIR [TETBLEND]
 #   TETBLEND defaults to the repository's build/release/apps/tetblend.
 #   MESHING_TESTS=path  the meshing_tests binary of the same build (default:
-#                       in TETBLEND's build tree, else build/release's)
+#                       in TETBLEND's build tree)
 #   EVAL_SETS="twists harsh"  only these sets; EVAL_CORPUS=0 skips the corpus
 set -uo pipefail
 HERE=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
@@ -15,22 +15,13 @@ REPO=$(cd "$HERE/../.." && pwd)
 USAGE="usage: run.sh DATA_DIR OUT_DIR [TETBLEND]"
 MAN=${1:?$USAGE}/manifest.tsv
 OUT=${2:?$USAGE}
-TB=${3:-}
-if [ -z "$TB" ]; then
-  for c in "$REPO/build/release/apps/tetblend" "$REPO/build/release/tetblend"; do
-    [ -x "$c" ] && TB=$c && break
-  done
-fi
+TB=${3:-$REPO/build/release/apps/tetblend}
 [ -x "$TB" ] || { echo "no tetblend binary: $TB" >&2; exit 1; }
 TB=$(readlink -f "$TB")
 [ -f "$MAN" ] || { echo "no $MAN: run generate.sh first" >&2; exit 1; }
-if [ -z "${MESHING_TESTS:-}" ]; then
-  root=$(dirname "$(dirname "$TB")")          # .../build/release when TB is .../apps/tetblend
-  for c in "$root/tests/meshing/meshing_tests" "$(dirname "$TB")/tests/meshing/meshing_tests" \
-           "$REPO/build/release/tests/meshing/meshing_tests"; do
-    [ -x "$c" ] && MESHING_TESTS=$c && break
-  done
-fi
+# TB is BUILD/apps/tetblend; the corpus test is BUILD/tests/meshing/meshing_tests.
+MESHING_TESTS=${MESHING_TESTS:-$(dirname "$(dirname "$TB")")/tests/meshing/meshing_tests}
+[ -x "$MESHING_TESTS" ] || MESHING_TESTS=
 mkdir -p "$OUT"
 rm -f "$OUT"/*.log "$OUT"/*.inspect "$OUT"/*.tbm "$OUT"/info "$OUT"/summary "$OUT"/detail
 {
