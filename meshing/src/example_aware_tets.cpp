@@ -493,7 +493,7 @@ CompatibleTetMeshes buildCompatibleTetMeshes(const TetMesh& rest, int surfaceVer
   // the corpus's knot1 1080° twist with 48-89 inverted tets and 8 clean
   // frames of the README's sets of The untangler with some; with their
   // neighbours, none and 3 (2026-12-02; the refined meshes have up to 38 %
-  // more tets, 4-holes handle 5817 → 8031).
+  // more tets, the 3-holes eight 1164 → 1601).
   // The splits made for one example also split the other examples' inverted
   // tets, each into more inverted tets (a self-intersecting frame's 19 grew
   // to 6336 while the dino's clean frames were refined): an example is
