@@ -12,12 +12,11 @@
 #include <tbb/parallel_pipeline.h>
 #include <tbb/task_arena.h>
 
-#include "crease_rings.h"
 #include "half_edge_table.h"
+#include "inverted_tet_splits.h"
 #include "surface_interior.h"
 #include "tet_stellar_split.h"
 #include "tetblend/core/blas_threads.h"
-#include "tetblend/core/constants.h"
 #include "tetblend/core/error.h"
 #include "tetblend/core/tet_geometry.h"
 #include "tetblend/meshing/self_intersection.h"
@@ -34,14 +33,6 @@ namespace {
 // other model, and took the homer's 48 frames from 28.9, 28.3 s to 34.2,
 // 32.7 s (paired runs).
 constexpr int kPatience = 4;
-
-// The widest dihedral angle a tet around a boundary edge is left when a
-// clean example keeps a tet there inverted (creaseRingSplits): a ring of k
-// tets whose example opens the edge by more than k × 150° gets a tet more.
-// A tet's volume on given faces goes with the sine of that angle (½ at
-// 150°). The femur's crease (355° over 2 tets) is caught by any bound below
-// 177.5°; only 150° was measured (2026-11-29, the README's The untangler).
-constexpr double kCreaseTetDihedral = 150.0 * kPi / 180.0;
 
 // Working memory of one example's placement per rest tet, an upper bound:
 // a clean example that frees the whole interior holds the Newton untangler's
@@ -105,65 +96,6 @@ std::vector<Simplex> simplicesFreeing(const TetMesh& mesh, const std::vector<int
   }
   std::sort(simplices.begin(), simplices.end());
   simplices.erase(std::unique(simplices.begin(), simplices.end()), simplices.end());
-  return simplices;
-}
-
-// `tets` of `mesh` and every tet sharing a vertex with one of them, sorted.
-std::vector<int> tetsSharingAVertex(const TetMesh& mesh, const std::vector<int>& tets) {
-  std::vector<char> touched(static_cast<std::size_t>(mesh.vertices.rows()), 0);
-  for (int t : tets) {
-    for (int c = 0; c < 4; ++c) touched[static_cast<std::size_t>(mesh.tets(t, c))] = 1;
-  }
-  std::vector<int> result;
-  for (Eigen::Index t = 0; t < mesh.tets.rows(); ++t) {
-    for (int c = 0; c < 4; ++c) {
-      if (touched[static_cast<std::size_t>(mesh.tets(t, c))]) {
-        result.push_back(static_cast<int>(t));
-        break;
-      }
-    }
-  }
-  return result;
-}
-
-// What to split for the tets `bad` (an example's inverted tets and their
-// neighbours) of an example with surface `exampleSurface`: for a tet with a
-// boundary edge whose ring of tets cannot span the example's fold there
-// (creaseRingSplits, kCreaseTetDihedral), the split that adds a tet to the
-// ring; for the others, simplicesToSplit's.
-// Splitting a tet's longest edge never adds a tet around its boundary edges:
-// the new vertex becomes the shared apex of both boundary faces again. A
-// 540° twist of CGAL's femur folded a reflex edge with two tets into a
-// 355° crease, and its tet stayed inverted through every round.
-std::vector<Simplex> splitsForInverted(const TetMesh& mesh, const std::vector<int>& bad,
-                                       const Vertices& exampleSurface, const Triangles& outward,
-                                       int surfaceCount, const BoundarySimplices& boundary) {
-  const std::vector<BoundaryEdgeRing> rings = boundaryEdgeRings(mesh, outward);
-  auto ends = [](int u, int v) { return std::pair(std::min(u, v), std::max(u, v)); };
-  auto ringOf = [&](int u, int v) -> const BoundaryEdgeRing* {
-    const auto found = std::lower_bound(rings.begin(), rings.end(), ends(u, v),
-                                        [&](const BoundaryEdgeRing& ring, std::pair<int, int> key) {
-                                          return ends(ring.a, ring.b) < key;
-                                        });
-    return found != rings.end() && ends(found->a, found->b) == ends(u, v) ? &*found : nullptr;
-  };
-  const std::vector<const Vertices*> example = {&exampleSurface};
-  std::vector<Simplex> simplices;
-  for (int t : bad) {
-    std::vector<BoundaryEdgeRing> around;
-    for (int i = 0; i < 4; ++i) {
-      for (int j = i + 1; j < 4; ++j) {
-        if (const BoundaryEdgeRing* ring = ringOf(mesh.tets(t, i), mesh.tets(t, j))) {
-          around.push_back(*ring);
-        }
-      }
-    }
-    std::vector<Simplex> splits =
-        creaseRingSplits(mesh, around, example, boundary, kCreaseTetDihedral);
-    if (splits.empty()) splits = simplicesToSplit(mesh, t, surfaceCount, boundary);
-    simplices.insert(simplices.end(), splits.begin(), splits.end());
-  }
-  sortUnique(simplices);
   return simplices;
 }
 
@@ -379,7 +311,8 @@ void untangleAgain(const CompatibleTetBuilder& builder, const UntangleEffort& ef
 // placement starts from the finer mesh's harmonic and ARAP maps. On the
 // README's sets of The untangler (2026-12-02) this left the open lion's
 // frame 14 with 1 inverted tet instead of 11 and the 3-holes femur's frame 4
-// with none instead of 2, in about the same time over all sets.
+// with none instead of 2, and doubled the open lion's time (16 → 32-35 s,
+// four fresh placements on 39 k tets).
 void untangleRefined(const CompatibleTetBuilder& builder, const Vertices& surface,
                      const UntangleEffort& effort, CompatibleTetResult& example) {
   untangleAgain(builder, effort, example);
@@ -492,13 +425,8 @@ CompatibleTetMeshes buildCompatibleTetMeshes(const TetMesh& rest, int surfaceVer
   // may count more before the next one counts fewer: an example's rounds stop
   // after kPatience rounds without a new best, and its best state is kept.
   // Valid placements stay valid through every split.
-  // A round splits around the inverted tets and every tet sharing a vertex
-  // with one (tetsSharingAVertex): the untangler needs room beside an
-  // inverted tet, not only inside it. Splitting the inverted tets alone left
-  // the corpus's knot1 1080° twist with 48-89 inverted tets and 8 clean
-  // frames of the README's sets of The untangler with some; with their
-  // neighbours, none and 3 (2026-12-02; the refined meshes have up to 38 %
-  // more tets, the 3-holes eight 1164 → 1601).
+  // A round splits around the inverted tets and their neighbours
+  // (inverted_tet_splits.h).
   // The splits made for one example also split the other examples' inverted
   // tets, each into more inverted tets (a self-intersecting frame's 19 grew
   // to 6336 while the dino's clean frames were refined): an example is
@@ -544,9 +472,9 @@ CompatibleTetMeshes buildCompatibleTetMeshes(const TetMesh& rest, int surfaceVer
     CompatibleTetMeshes bestMeshes;
     int sinceBest = 0;
     while (best > 0 && sinceBest < kPatience && rounds < options.maxRounds) {
-      const std::vector<Simplex> simplices = splitsForInverted(
-          meshes.rest, tetsSharingAVertex(meshes.rest, meshes.examples[k].invertedTets),
-          exampleSurfaces[k], triangles, surfaceVertexCount, boundary);
+      const std::vector<Simplex> simplices =
+          splitsForInverted(meshes.rest, meshes.examples[k].invertedTets, exampleSurfaces[k],
+                            triangles, surfaceVertexCount, boundary);
       if (simplices.empty()) break;
       if (sinceBest == 0) bestMeshes = meshes;
       if (!split(simplices, meshes)) break;

@@ -30,7 +30,7 @@ namespace {
 // Clean poses that may still keep inverted tets (issue "prepare every pose
 // users bring"), with the most they may keep. knot1's 1080° twist is chaotic
 // in the untangler's arithmetic: before stage 3 split the inverted tets'
-// neighbours too (example_aware_tets.cpp), changes at the level of rounding
+// neighbours too (inverted_tet_splits.h), changes at the level of rounding
 // gave 6 to 196 tets, and one commit 21 on one machine and 35 on another (an
 // AMD EPYC). Since then it keeps none here, and 0 or 1 over six TetGen
 // quality bounds from 1.8 to 3 (`tetblend prepare` of its twist720 and
