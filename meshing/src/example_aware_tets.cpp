@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <limits>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -33,6 +34,19 @@ namespace {
 // other model, and took the homer's 48 frames from 28.9, 28.3 s to 34.2,
 // 32.7 s (paired runs).
 constexpr int kPatience = 4;
+
+// Stage 3 refines while the rest mesh has at most this many times the tets
+// it had after stage 1. Each round splits the inverted tets of one example
+// and their neighbours, and with them the inverted tets of the examples
+// still waiting, so the mesh can grow geometrically over rounds where an
+// example cannot be repaired. Without the bound, a mirrored bar (every tet
+// must invert; example_aware_tets_test) ran for over 12 minutes, past 1 GB,
+// before it was stopped, and the lion's 48 gallop frames, with the untangler
+// allowed 500 rounds instead of 150, reached 277 k inverted tets of one
+// frame (3 GB, stopped after 20 minutes). On the README's sets of The
+// untangler stage 3 added at most 38 % (the 4-holes handle), so the bound
+// changes none of them; the tets an example keeps inverted are reported.
+constexpr double kMaxStage3Growth = 2.0;
 
 // Working memory of one example's placement per rest tet, an upper bound:
 // a clean example that frees the whole interior holds the Newton untangler's
@@ -135,12 +149,14 @@ std::vector<std::size_t> splitsLeavingFlatTets(const TetMesh& refined, Eigen::In
 }
 
 // Splits `simplices` in the rest mesh and extends every placed example;
-// false when none could be split. A split halves a tet's volume exactly
+// false, changing nothing, when none could be split or the refined mesh
+// would have more than maxTets tets. A split halves a tet's volume exactly
 // only in exact arithmetic: a sliver of the rest (a triangle of nearly zero
 // area and its tet) can round to a child of volume 0 or below, which no
 // later step accepts (a 16-frame elephant with such triangles was refused),
 // so the simplices whose split does that are left out, and the rest split.
-bool split(std::vector<Simplex> simplices, CompatibleTetMeshes& meshes) {
+bool split(std::vector<Simplex> simplices, CompatibleTetMeshes& meshes,
+           Eigen::Index maxTets = std::numeric_limits<Eigen::Index>::max()) {
   const Eigen::Index firstNew = meshes.rest.vertices.rows();
   TetMesh refined = splitSimplices(meshes.rest, simplices);
   for (std::vector<std::size_t> flat = splitsLeavingFlatTets(refined, firstNew); !flat.empty();
@@ -152,6 +168,7 @@ bool split(std::vector<Simplex> simplices, CompatibleTetMeshes& meshes) {
     if (simplices.empty()) return false;
     refined = splitSimplices(meshes.rest, simplices);
   }
+  if (refined.tets.rows() > maxTets) return false;
   meshes.rest = std::move(refined);
   for (CompatibleTetResult& example : meshes.examples) {
     example.vertices = extendedPositions(example.vertices, simplices);
@@ -457,6 +474,8 @@ CompatibleTetMeshes buildCompatibleTetMeshes(const TetMesh& rest, int surfaceVer
     return meshes.examples[a].invertedTets.size() < meshes.examples[b].invertedTets.size();
   });
   if (!options.placement.untangle) order.clear();
+  const auto maxTets =
+      static_cast<Eigen::Index>(kMaxStage3Growth * static_cast<double>(meshes.rest.tets.rows()));
   for (std::size_t k : order) {
     if (measuredOn[k] != meshes.rest.tets.rows()) {
       const CompatibleTetBuilder current(meshes.rest, surfaceVertexCount, placement);
@@ -477,7 +496,7 @@ CompatibleTetMeshes buildCompatibleTetMeshes(const TetMesh& rest, int surfaceVer
                             triangles, surfaceVertexCount, boundary);
       if (simplices.empty()) break;
       if (sinceBest == 0) bestMeshes = meshes;
-      if (!split(simplices, meshes)) break;
+      if (!split(simplices, meshes, maxTets)) break;
       ++rounds;
       const CompatibleTetBuilder refined(meshes.rest, surfaceVertexCount, placement);
       untangleRefined(refined, exampleSurfaces[k], options.placement.untangleEffort,

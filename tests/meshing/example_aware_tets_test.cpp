@@ -10,6 +10,8 @@
 #include <algorithm>
 #include <array>
 #include <random>
+#include <string>
+#include <utility>
 #include <vector>
 
 #include "../test_seed.h"
@@ -148,6 +150,35 @@ TEST(ExampleAwareTets, AnUnrepairableTetInAPartWithoutInteriorEndsThePlacement) 
   const std::vector<int>& inverted = built.examples[0].invertedTets;
   ASSERT_EQ(inverted.size(), 1u);
   EXPECT_GE(built.rest.tets.row(inverted[0]).minCoeff(), surfaceCount - 4);  // the tetrahedron's
+}
+
+// The whole bar mirrored: its surface is free of intersections, but a
+// mirror turns every tet inside out whatever the placement, so stage 3 cannot
+// repair the example, and each of its rounds splits every tet (the inverted
+// ones and their neighbours). Those rounds must stop once the mesh would pass
+// twice its size after stage 1 (example_aware_tets.cpp, kMaxStage3Growth):
+// the first already would, so stage 3 reports no round. Without the bound
+// this test ran for over 12 minutes and passed 1 GB before it was stopped.
+TEST(ExampleAwareTets, RefinementStopsBeforeTheMeshDoublesForAnUnrepairableExample) {
+  const AllSurfaceBar bar = allSurfaceBar();
+  const int surfaceCount = static_cast<int>(bar.surface.vertices.rows());
+  Vertices mirrored = bar.surface.vertices;
+  mirrored.col(1) *= -1.0;
+  ASSERT_EQ(findSelfIntersections(mirrored, bar.surface.triangles, 1).pairCount, 0u);
+  auto refineReports = [&](bool untangle) {
+    ExampleAwareOptions options;
+    options.placement.untangle = untangle;  // false: stages 1 and 2 only
+    int reports = 0;
+    const CompatibleTetMeshes built = buildCompatibleTetMeshes(
+        bar.rest, surfaceCount, {mirrored}, options,
+        [&](const char* stage) { reports += std::string(stage) == "refine" ? 1 : 0; });
+    EXPECT_FALSE(built.examples[0].invertedTets.empty());
+    return std::pair(reports, built.rest.tets.rows());
+  };
+  const auto [stage1Reports, stage1Tets] = refineReports(false);
+  const auto [reports, tets] = refineReports(true);
+  EXPECT_EQ(reports, stage1Reports);
+  EXPECT_EQ(tets, stage1Tets);
 }
 
 // Examples are placed several at once when there are threads for it; the
