@@ -43,10 +43,11 @@ constexpr int kPatience = 4;
 // must invert; example_aware_tets_test) ran for over 12 minutes, past 1 GB,
 // before it was stopped, and the lion's 48 gallop frames, with the untangler
 // allowed 500 rounds instead of 150, reached 277 k inverted tets of one
-// frame (3 GB, stopped after 20 minutes). On the README's sets of The
-// untangler stage 3 added at most 38 % (the 4-holes handle), so the bound
-// changes none of them; the tets an example keeps inverted are reported.
-constexpr double kMaxStage3Growth = 2.0;
+// frame (3 GB, stopped after 20 minutes). Stage 3 needs room, though: the
+// hard-pose corpus's knot1 grew from TetGen's 10 k tets to 24 k, and with a
+// bound of 2 its 1080° twist kept 371 inverted tets; on the prepare sets of
+// The untangler (README) meshes grew by at most 38 %.
+constexpr double kMaxStage3Growth = 4.0;
 
 // Working memory of one example's placement per rest tet, an upper bound:
 // a clean example that frees the whole interior holds the Newton untangler's

@@ -155,11 +155,13 @@ TEST(ExampleAwareTets, AnUnrepairableTetInAPartWithoutInteriorEndsThePlacement) 
 // The whole bar mirrored: its surface is free of intersections, but a
 // mirror turns every tet inside out whatever the placement, so stage 3 cannot
 // repair the example, and each of its rounds splits every tet (the inverted
-// ones and their neighbours). Those rounds must stop once the mesh would pass
-// twice its size after stage 1 (example_aware_tets.cpp, kMaxStage3Growth):
-// the first already would, so stage 3 reports no round. Without the bound
-// this test ran for over 12 minutes and passed 1 GB before it was stopped.
-TEST(ExampleAwareTets, RefinementStopsBeforeTheMeshDoublesForAnUnrepairableExample) {
+// ones and their neighbours), at least doubling the mesh. The rounds must
+// stop before the mesh passes four times its size after stage 1
+// (example_aware_tets.cpp, kMaxStage3Growth), so at most two are made, and
+// since none lowers the count, the mesh after stage 1 is kept. Without the
+// bound this test ran for over 12 minutes and passed 1 GB before it was
+// stopped.
+TEST(ExampleAwareTets, RefinementStopsBeforeTheMeshGrowsFourfoldForAnUnrepairableExample) {
   const AllSurfaceBar bar = allSurfaceBar();
   const int surfaceCount = static_cast<int>(bar.surface.vertices.rows());
   Vertices mirrored = bar.surface.vertices;
@@ -177,7 +179,7 @@ TEST(ExampleAwareTets, RefinementStopsBeforeTheMeshDoublesForAnUnrepairableExamp
   };
   const auto [stage1Reports, stage1Tets] = refineReports(false);
   const auto [reports, tets] = refineReports(true);
-  EXPECT_EQ(reports, stage1Reports);
+  EXPECT_LE(reports - stage1Reports, 2);
   EXPECT_EQ(tets, stage1Tets);
 }
 
