@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 
 #include "component_fallbacks.h"
 #include "meshable_input.h"
@@ -27,17 +26,13 @@ using prepare_steps::advance;
 using prepare_steps::checkExamples;
 using prepare_steps::diagnosis;
 using prepare_steps::preparedPart;
+using prepare_steps::refuseInsideOut;
 using prepare_steps::refuseSelfIntersecting;
 using prepare_steps::roughCount;
 using prepare_steps::say;
 using prepare_steps::tetrisedModel;
+using prepare_steps::threeDigits;
 using prepare_steps::warnUnchangedExamples;
-
-std::string threeDigits(double value) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.3g", value);
-  return buffer;
-}
 
 // Smallest signed volume ratio (example / rest) over the listed tets.
 double worstVolumeRatio(const TetMesh& rest, const CompatibleTetResult& placed) {
@@ -260,6 +255,7 @@ ModelData preparedAsIs(const SurfaceMesh& rest, const std::vector<SurfaceMesh>& 
                            "(holes that touch there) are merged for meshing, and the holes filled "
                            "around them; the blended surfaces keep the input's vertices and faces");
   }
+  refuseInsideOut(meshed.surface, zipped, exampleNames);
   if (options.strict) {
     refuseSelfIntersecting(meshed.surface.triangles, zipped, exampleNames, meshed.faceComponent);
   }

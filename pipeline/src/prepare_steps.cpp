@@ -1,9 +1,15 @@
 #include "prepare_steps.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
+#include <utility>
+
+#include <Eigen/LU>
 
 #include "tetblend/core/error.h"
+#include "tetblend/meshing/surface_orientation.h"
 #include "tetblend/meshing/surface_validation.h"
 #include "tetblend/meshing/tetrisation.h"
 #include "tetblend/pipeline/format_number.h"
@@ -22,6 +28,12 @@ std::string roughCount(long long n) {
   if (n >= 1000000) return formatNumber(std::round(n / 1e4) / 100) + " M";
   if (n >= 10000) return formatNumber(std::round(n / 1e3)) + " k";
   return std::to_string(n);
+}
+
+std::string threeDigits(double value) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.3g", value);
+  return buffer;
 }
 
 std::string diagnosis(const SelfIntersections& found) {
@@ -47,6 +59,72 @@ void refuseSelfIntersecting(const Triangles& triangles, const std::vector<Surfac
       throw InputError(exampleNames[k] + ": " + diagnosis(found) +
                        ", so some tets cannot be embedded: repair the pose, or leave out --strict "
                        "to exclude those tets from the stitch");
+    }
+  }
+}
+
+namespace {
+
+// Per component of `faceComponent` (count components), the volume enclosed
+// by its faces (Σ det[p0 − c, p1 − c, p2 − c] / 6, c the mean vertex, which
+// keeps the terms small for data far from the origin).
+std::vector<double> componentVolumes(const Vertices& vertices, const Triangles& triangles,
+                                     const std::vector<int>& faceComponent, std::size_t count) {
+  const Eigen::RowVector3d centre = vertices.colwise().mean();
+  std::vector<double> volumes(count, 0.0);
+  for (Eigen::Index f = 0; f < triangles.rows(); ++f) {
+    const int c = faceComponent[static_cast<std::size_t>(f)];
+    if (c < 0) continue;
+    Eigen::Matrix3d p;
+    for (int k = 0; k < 3; ++k) p.row(k) = vertices.row(triangles(f, k)) - centre;
+    volumes[static_cast<std::size_t>(c)] += p.determinant() / 6.0;
+  }
+  return volumes;
+}
+
+// How many face pairs of component `c` of `faceComponent` intersect in
+// `positions`.
+std::size_t pairsWithin(const Vertices& positions, const Triangles& triangles,
+                        const std::vector<int>& faceComponent, int c) {
+  const SelfIntersections found = findSelfIntersections(
+      positions, triangles, std::numeric_limits<std::size_t>::max(), faceComponent);
+  return static_cast<std::size_t>(
+      std::count_if(found.pairs.begin(), found.pairs.end(), [&](const std::pair<int, int>& pair) {
+        return faceComponent[static_cast<std::size_t>(pair.first)] == c;
+      }));
+}
+
+}  // namespace
+
+void refuseInsideOut(const SurfaceMesh& rest, const std::vector<SurfaceMesh>& examples,
+                     const std::vector<std::string>& exampleNames) {
+  std::vector<int> faceComponent;
+  const std::vector<SurfaceComponent> components = surfaceComponents(rest, &faceComponent);
+  const std::vector<double> restVolumes =
+      componentVolumes(rest.vertices, rest.triangles, faceComponent, components.size());
+  for (std::size_t k = 0; k < examples.size(); ++k) {
+    const std::vector<double> volumes =
+        componentVolumes(examples[k].vertices, rest.triangles, faceComponent, components.size());
+    for (std::size_t c = 0; c < components.size(); ++c) {
+      if (!components[c].closed || !components[c].consistent ||
+          !(volumes[c] * restVolumes[c] < 0.0)) {
+        continue;
+      }
+      const int part = static_cast<int>(c);
+      if (pairsWithin(examples[k].vertices, rest.triangles, faceComponent, part) >
+          pairsWithin(rest.vertices, rest.triangles, faceComponent, part)) {
+        continue;  // pushed through itself rather than mirrored
+      }
+      const std::string where = components.size() == 1
+                                    ? "its surface"
+                                    : "the closed part of its surface with face " +
+                                          std::to_string(components[c].firstFace);
+      throw InputError(
+          exampleNames[k] + ": " + where + " encloses a volume of " + threeDigits(volumes[c]) +
+          " where the rest's encloses " + threeDigits(restVolumes[c]) +
+          " and intersects itself no more than there: the example is mirrored (turned inside "
+          "out), so no tet there can be embedded; export it without a negative "
+          "scale, or mirror it back");
     }
   }
 }

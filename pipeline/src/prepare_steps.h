@@ -24,6 +24,9 @@ void advance(const PrepareMessages& messages, std::size_t steps);
 /// "1.34 M" / "134 k" / "950": a tet count people read at a glance.
 std::string roughCount(long long n);
 
+/// `value` with three significant digits ("-0.0462", "1.5e+03").
+std::string threeDigits(double value);
+
 /// Why an example's tets cannot be embedded, in words: its surface
 /// intersects itself (how many face pairs, the first), or the placement
 /// failed.
@@ -36,6 +39,17 @@ std::string diagnosis(const SelfIntersections& found);
 void refuseSelfIntersecting(const Triangles& triangles, const std::vector<SurfaceMesh>& examples,
                             const std::vector<std::string>& exampleNames,
                             const std::vector<int>& faceComponent = {});
+
+/// Refuses an example that turns a closed part of `rest` inside out, as a
+/// mirror does (a negative scale in an exporter): the part's enclosed volume
+/// changes sign, and the part intersects itself at no more face pairs than
+/// in `rest`. Every tet of that part would be inverted, whatever the
+/// placement. (A part pushed through itself may enclose a negative volume
+/// too; it crosses itself more, is accepted, and its tets that cannot be
+/// embedded are excluded.) `rest` is the surface meshed (closed, oriented;
+/// holes filled), and each example has its vertex rows.
+void refuseInsideOut(const SurfaceMesh& rest, const std::vector<SurfaceMesh>& examples,
+                     const std::vector<std::string>& exampleNames);
 
 /// Warns about each example equal to the rest (one with another vertex
 /// count is left to checkExamples).
