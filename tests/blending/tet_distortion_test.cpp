@@ -1,6 +1,6 @@
 // The closed-form distortion and rotation angle of a tet's gradient
 // (tetDistortion) against the reference (tetDistortionReference: Eigen's
-// JacobiSVD and polarDecompose's Newton iteration) as the oracle.
+// JacobiSVD) as the oracle, and the reference against polarDecompose.
 
 #include "tetblend/blending/tet_distortion.h"
 
@@ -12,7 +12,9 @@
 #include <random>
 
 #include "test_seed.h"
+#include "tetblend/core/error.h"
 #include "tetblend/core/polar.h"
+#include "tetblend/core/so3.h"
 
 namespace tetblend {
 namespace {
@@ -74,6 +76,44 @@ TEST(TetDistortion, ClosedFormAgreesWithTheJacobiSvdOracle) {
       EXPECT_GE(closedForm, samples * 9 / 10) << "cond " << cond;
     }
   }
+}
+
+// The reference's rotation is polarDecompose's (Newton iteration, an
+// independent method) wherever that converges: random F up to cond 1e8.
+TEST(TetDistortion, ReferenceRotationIsThePolarFactor) {
+  std::mt19937 rng(test_seed::seedOfCurrentTest(15));
+  for (const double cond : {1.0, 10.0, 1e4, 1e8}) {
+    for (int i = 0; i < 100; ++i) {
+      const Eigen::Matrix3d f = randomGradient(rng, cond, 1.0, i % 2 == 1);
+      const double angle = so3Log(polarDecompose(f).rotation).norm();
+      // The polar factor moves by |E| / sigma_min for a perturbation E of F:
+      // both methods are backward stable (a few eps |F|), so per unit of cond.
+      EXPECT_NEAR(tetDistortionReference(f, f.determinant()).rotationAngle, angle,
+                  kAgreementPerCond * (1.0 + cond))
+          << "cond " << cond << " sample " << i;
+    }
+  }
+}
+
+// A blended gradient met in a tet of a part that an example scales to a
+// point (a 4π-twisted bar beside a small bar collapsed to its centre),
+// blended at that example's weights: its first and last columns are nearly
+// parallel, det F = 5 comes from round-off in the 1e14 column, and
+// polarDecompose's Newton iteration threw, refusing the whole blend over a
+// quality figure. The figures must still come out: a huge condition number
+// and an angle in [0, pi].
+TEST(TetDistortion, NearlySingularGradientWithPositiveDetStillGivesItsFigures) {
+  Eigen::Matrix3d f;
+  f.col(0) << 1.9623987849021332, -30.000000000000036, -6.9731662109173866;
+  f.col(1) << -132469464534782.72, -591730547490293.25, -2840421470030.0571;
+  f.col(2) << -1.226499240563832, 18.750000000000004, 4.3582288818233614;
+  const double det = f.determinant();
+  ASSERT_GT(det, 0.0);
+  EXPECT_THROW(polarDecompose(f), NumericalError);  // what the blend met
+  const TetDistortion got = tetDistortion(f, det);
+  EXPECT_GT(got.conditionNumber, 1e15);
+  EXPECT_GE(got.rotationAngle, 0.0);
+  EXPECT_LE(got.rotationAngle, M_PI + 1e-12);
 }
 
 TEST(TetDistortion, InvertedAndFlatGradientsTakeTheReference) {

@@ -22,8 +22,10 @@ struct TetDistortion {
 /// tests/blending/tet_distortion_test.cpp).
 TetDistortion tetDistortion(const Eigen::Matrix3d& f, double det);
 
-/// The reference figures: Eigen's JacobiSVD singular values and
-/// polarDecompose's rotation (Newton iteration), for any F.
+/// The reference figures: Eigen's JacobiSVD singular values and polar
+/// rotation U V^T, for any F (polarDecompose's Newton iteration can fail at
+/// condition numbers near 1e26, which the collapsed part of a posed
+/// character reaches at its example's weights).
 TetDistortion tetDistortionReference(const Eigen::Matrix3d& f, double det);
 
 }  // namespace tetblend
