@@ -24,6 +24,7 @@ namespace {
 
 using prepare_steps::advance;
 using prepare_steps::checkExamples;
+using prepare_steps::collapsedFaceCount;
 using prepare_steps::diagnosis;
 using prepare_steps::preparedPart;
 using prepare_steps::refuseInsideOut;
@@ -297,12 +298,14 @@ ModelData preparedAsIs(const SurfaceMesh& rest, const std::vector<SurfaceMesh>& 
   for (std::size_t k = 0; k < examples.size(); ++k) {
     CompatibleTetResult& example = built.examples[k + first];
     if (!example.invertedTets.empty()) {
-      const std::string what = exampleNames[k] + ": " +
-                               std::to_string(example.invertedTets.size()) +
-                               " tets cannot be embedded (worst volume ratio " +
-                               threeDigits(worstVolumeRatio(built.rest, example)) + ", first tet " +
-                               std::to_string(example.invertedTets.front()) + "); " +
-                               diagnosis(built.selfIntersections[k + first]);
+      const std::string what =
+          exampleNames[k] + ": " + std::to_string(example.invertedTets.size()) +
+          " tets cannot be embedded (worst volume ratio " +
+          threeDigits(worstVolumeRatio(built.rest, example)) + ", first tet " +
+          std::to_string(example.invertedTets.front()) + "); " +
+          diagnosis(built.selfIntersections[k + first],
+                    collapsedFaceCount(welding.surface.vertices, zipped[k].vertices,
+                                       meshed.surface.triangles));
       if (options.strict) {
         throw InputError(what + ": leave out --strict to exclude those tets from the stitch");
       }
