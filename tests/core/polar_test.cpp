@@ -243,6 +243,42 @@ TEST(Polar, ClosedFormResidualCheckRejectsAReflection) {
       rot * Eigen::Vector3d(2, 1, 0.5).asDiagonal().toDenseMatrix(), p));
 }
 
+// Where the Newton iteration fails, the SVD fallback still gives a rotation
+// and a symmetric stretch that reproduce A (backward properties; the forward
+// error has no meaning at these condition numbers). First a blended gradient
+// of a part scaled to a point: det 5 made of round-off beside a 1e14 column
+// (the iteration met a non-positive det and threw before), then random A
+// with singular values 1, 1 and 1e-16 to 1e-20, whose det is round-off:
+// where it came out positive, 26 of 232 threw before.
+TEST(Polar, NewtonFailureFallsBackToTheSvd) {
+  auto expectBackwardValid = [](const Eigen::Matrix3d& a, const PolarDecomposition& p) {
+    ASSERT_TRUE(p.rotation.allFinite() && p.stretch.allFinite());
+    EXPECT_LE((p.rotation.transpose() * p.rotation - Eigen::Matrix3d::Identity()).norm(),
+              kFactorTol);
+    EXPECT_NEAR(p.rotation.determinant(), 1.0, kFactorTol);
+    EXPECT_EQ(p.stretch, p.stretch.transpose());
+    EXPECT_LE(relativeError(p.rotation * p.stretch, a), kReconstructionTol);
+  };
+  Eigen::Matrix3d blended;
+  blended.col(0) << 1.9623987849021332, -30.000000000000036, -6.9731662109173866;
+  blended.col(1) << -132469464534782.72, -591730547490293.25, -2840421470030.0571;
+  blended.col(2) << -1.226499240563832, 18.750000000000004, 4.3582288818233614;
+  ASSERT_GT(blended.determinant(), 0.0);
+  expectBackwardValid(blended, polarDecompose(blended));
+  std::mt19937 rng(testSeed("Polar.NewtonFailureFallsBackToTheSvd"));
+  for (double cond : {1e16, 1e17, 1e18, 1e20}) {
+    for (int i = 0; i < 100; ++i) {
+      const Eigen::Matrix3d a = core_test::randomRotation(rng) *
+                                Eigen::Vector3d(1.0, 1.0, 1.0 / cond).asDiagonal() *
+                                core_test::randomRotation(rng).transpose();
+      if (!(a.determinant() > 0.0)) continue;
+      SCOPED_TRACE(testing::Message() << "cond " << cond << " A =\n" << a);
+      expectBackwardValid(a, polarDecompose(a));
+      if (HasFatalFailure() || HasNonfatalFailure()) return;
+    }
+  }
+}
+
 TEST(Polar, NonPositiveDeterminantThrows) {
   EXPECT_THROW(polarDecompose(Eigen::Vector3d(1, 1, -1).asDiagonal().toDenseMatrix()),
                DomainError);  // reflection

@@ -23,9 +23,8 @@ struct TetDistortion {
 TetDistortion tetDistortion(const Eigen::Matrix3d& f, double det);
 
 /// The reference figures: Eigen's JacobiSVD singular values and polar
-/// rotation U V^T, for any F (polarDecompose's Newton iteration can fail at
-/// condition numbers near 1e26, which the collapsed part of a posed
-/// character reaches at its example's weights).
+/// rotation U V^T, for any F (a method independent of polarDecompose's
+/// Newton iteration, which the tests compare it with).
 TetDistortion tetDistortionReference(const Eigen::Matrix3d& f, double det);
 
 }  // namespace tetblend

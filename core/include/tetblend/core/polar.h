@@ -27,8 +27,11 @@ struct PolarLogDecomposition {
 /// Any scale the double range holds: A with det A outside
 /// [polar_detail::kUnscaledMinDet, kUnscaledMaxDet] is first scaled by a power
 /// of two 2^-k (exactly) to det in [1, 8), and S scaled back by 2^k.
+/// Where the iteration meets a non-positive det or does not settle in 30
+/// steps (A so near singular that its det is round-off), the factors come
+/// from the Jacobi SVD instead (R = U V^T, S = sym(R^T A)).
 /// Throws DomainError if det A <= 0 or A is not finite (no reflection is ever
-/// returned), NumericalError if the iteration fails to converge.
+/// returned).
 PolarDecomposition polarDecompose(const Eigen::Matrix3d& a);
 
 /// Rotation factor of A and log S = V log(Sigma) V^T (Sigma = singular values
