@@ -33,6 +33,8 @@ PREPARE_CASES = [
     (REST, TRIANGLES, [np.where(EXAMPLE == 2.0, np.nan, EXAMPLE)], tetblend.InputError,
      ["example_vertices[0][1, 0]", "nan", "finite"]),
     (REST, TRIANGLES, [], tetblend.InputError, ["at least one example"]),
+    (REST, TRIANGLES, [REST * [-1.0, 1.0, 1.0]], tetblend.InputError,
+     ["example_vertices[0]", "mirrored", "mirror it back"]),
 ]
 
 
