@@ -391,7 +391,7 @@ struct CompatibleTetBuilder::Impl {
   // inverted tets, then the lowest ARAP energy: ARAP can fold strongly
   // compressed regions that harmonic kept valid. With options.stopWhenValid
   // the first candidate without inverted tets ends the search.
-  void arapSearch(const Vertices& example, CompatibleTetResult& result) {
+  void arapSearch(const Vertices& example, int maxIterations, CompatibleTetResult& result) {
     const Eigen::MatrixXd boundary = example;
     Vertices best;
     std::pair<size_t, double> bestKey(SIZE_MAX, INFINITY);
@@ -420,7 +420,7 @@ struct CompatibleTetBuilder::Impl {
       }
     }
     const double tolerance = options.arapRelativeTolerance * diagonal;
-    for (int iteration = 0; iteration < options.arapIterations && !done; ++iteration) {
+    for (int iteration = 0; iteration < maxIterations && !done; ++iteration) {
       arapRhs(rotations, rhs);
       const Eigen::MatrixXd interior = solveInterior(rhs, boundary);
       const double moved =
@@ -482,6 +482,11 @@ Vertices CompatibleTetBuilder::harmonicExtension(const Vertices& exampleSurface)
 }
 
 CompatibleTetResult CompatibleTetBuilder::place(const Vertices& exampleSurface) const {
+  return place(exampleSurface, impl_->options.arapIterations);
+}
+
+CompatibleTetResult CompatibleTetBuilder::place(const Vertices& exampleSurface,
+                                                int arapIterations) const {
   Impl& m = *impl_;
   CompatibleTetResult result;
   result.vertices = harmonicExtension(exampleSurface);
@@ -489,7 +494,7 @@ CompatibleTetResult CompatibleTetBuilder::place(const Vertices& exampleSurface) 
   result.harmonicInvertedCount = static_cast<int>(result.invertedTets.size());
   const bool harmonicAccepted = m.options.stopWhenValid && result.invertedTets.empty();
   if (m.interiorCount > 0 && !harmonicAccepted) {
-    m.arapSearch(exampleSurface, result);
+    m.arapSearch(exampleSurface, arapIterations, result);
     if (m.options.untangle) {
       result.untangleRounds = m.untangleInverted(result.vertices, m.options.untangleEffort);
     }

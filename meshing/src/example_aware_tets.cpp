@@ -426,7 +426,10 @@ CompatibleTetMeshes buildCompatibleTetMeshes(const TetMesh& rest, int surfaceVer
   meshes.examples.resize(exampleCount);
   forEachExample(
       exampleCount, concurrentExamples(meshes.rest.tets.rows(), exampleCount), [&](std::size_t k) {
-        CompatibleTetResult placed = builder.place(exampleSurfaces[k]);
+        CompatibleTetResult placed =
+            builder.place(exampleSurfaces[k], meshes.selfIntersections[k].pairCount > 0
+                                                  ? options.intersectingArapIterations
+                                                  : options.placement.arapIterations);
         if (options.placement.untangle && !placed.invertedTets.empty()) {
           untangleAgain(builder, effortFor(meshes.selfIntersections[k], options), placed);
         }

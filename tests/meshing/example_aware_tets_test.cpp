@@ -183,6 +183,34 @@ TEST(ExampleAwareTets, RefinementStopsBeforeTheMeshGrowsFourfoldForAnUnrepairabl
   EXPECT_EQ(tets, stage1Tets);
 }
 
+// Examples whose surface intersects itself take at most
+// intersectingArapIterations ARAP iterations, clean ones the placement's:
+// the bar's nine hard poses with the self-intersecting ones capped at 2.
+// With the cap at the placement's 15, at least one of them takes more than 2
+// (so the cap is what holds them).
+TEST(ExampleAwareTets, SelfIntersectingExamplesTakeTheirOwnArapIterations) {
+  const AllSurfaceBar bar = allSurfaceBar();
+  const int surfaceCount = static_cast<int>(bar.surface.vertices.rows());
+  std::vector<Vertices> poses;
+  for (const NamedPose& pose : hardPoses(bar.surface.vertices, bar.surface.triangles)) {
+    poses.push_back(pose.vertices);
+  }
+  auto largestIntersectingIterations = [&](int cap) {
+    ExampleAwareOptions options;
+    options.intersectingArapIterations = cap;
+    const CompatibleTetMeshes built =
+        buildCompatibleTetMeshes(bar.rest, surfaceCount, poses, options);
+    int largest = 0;
+    for (std::size_t k = 0; k < poses.size(); ++k) {
+      if (built.selfIntersections[k].pairCount == 0) continue;
+      largest = std::max(largest, built.examples[k].arapIterations);
+    }
+    return largest;
+  };
+  EXPECT_LE(largestIntersectingIterations(2), 2);
+  EXPECT_GT(largestIntersectingIterations(CompatibleTetOptions{}.arapIterations), 2);
+}
+
 // Examples are placed several at once when there are threads for it; the
 // result must be the one-at-a-time result bit for bit (each placement is
 // deterministic and writes only its own example). The bar's nine hard poses:

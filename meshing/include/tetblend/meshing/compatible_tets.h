@@ -168,6 +168,9 @@ class CompatibleTetBuilder {
   /// (#S by 3, same vertex order as the rest surface) by steps 1–3 above.
   /// Throws InputError on a wrong row count or non-finite positions.
   CompatibleTetResult place(const Vertices& exampleSurface) const;
+  /// place() with at most `arapIterations` ARAP iterations instead of the
+  /// options' (examples whose surface intersects itself take fewer).
+  CompatibleTetResult place(const Vertices& exampleSurface, int arapIterations) const;
 
   /// Step 1 only: the harmonic extension (#V by 3), exact for affine maps.
   Vertices harmonicExtension(const Vertices& exampleSurface) const;

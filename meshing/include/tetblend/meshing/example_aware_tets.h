@@ -81,6 +81,15 @@ struct ExampleAwareOptions {
   /// same clean frames; judging progress by the inverted count alone (min
   /// det F rising not counted) with 8 rounds: 221.7 s, 42 980.
   UntangleEffort intersectingUntangle{3, 1, 40, 1e-3, false, 4, 4, 0.2};
+  /// ARAP iterations at most for examples whose surface intersects itself
+  /// (clean ones: placement.arapIterations, 15). Measured 2026-12-02, 5
+  /// against 15: bench_meshing's hard 100 k row embedded in 0.78, 0.78 s
+  /// instead of 1.26, 1.20 s and its 1 M row in 15.4 s instead of 17.4 s,
+  /// while their self-intersecting elbow (a deep fold) excluded 24 % more
+  /// tets (1369 against 1106, 13 395 against 10 807); over the five prepare
+  /// sets of the README (364 self-intersecting frames) one frame changed,
+  /// by 3 excluded tets.
+  int intersectingArapIterations = 5;
 };
 
 /// The compatible tet meshes of a rest mesh and its examples.
