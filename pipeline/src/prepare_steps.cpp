@@ -65,7 +65,7 @@ std::string diagnosis(const SelfIntersections& found, std::size_t collapsedFaces
 
 std::size_t collapsedFaceCount(const Vertices& rest, const Vertices& example,
                                const Triangles& triangles) {
-  auto doubleAreas = [&](const Vertices& v) {
+  auto collapsedIn = [&](const Vertices& v) {
     const double diagonal = (v.colwise().maxCoeff() - v.colwise().minCoeff()).norm();
     const double floor = kCollapsedArea * diagonal * diagonal;
     std::vector<char> small(static_cast<std::size_t>(triangles.rows()));
@@ -76,7 +76,7 @@ std::size_t collapsedFaceCount(const Vertices& rest, const Vertices& example,
     }
     return small;
   };
-  const std::vector<char> inRest = doubleAreas(rest), inExample = doubleAreas(example);
+  const std::vector<char> inRest = collapsedIn(rest), inExample = collapsedIn(example);
   std::size_t count = 0;
   for (std::size_t f = 0; f < inRest.size(); ++f) count += inExample[f] && !inRest[f] ? 1 : 0;
   return count;
