@@ -59,18 +59,14 @@ int normalisingExponent(const Eigen::Matrix3d& a, const char* function) {
   return e1 + core_detail::floorDivide3(std::ilogb(det1));
 }
 
-// A = R S from the Jacobi SVD A = U Sigma V^T: R = U V^T, its det made +1
-// by flipping the smallest singular direction where rounding gave -1 (det A
-// > 0 asks for +1), and S = sym(R^T A). Slower than the Newton iteration and
-// without its forward accuracy, but defined for every A with det A > 0: the
-// fallback where the iteration meets a non-positive det or does not settle
-// (a blended gradient with det 5 made of round-off beside a 1e14 column).
+// A = R S with R = polar_detail::svdRotation(A) and S = sym(R^T A). Slower
+// than the Newton iteration and without its forward accuracy, but defined
+// for every A with det A > 0: the fallback where the iteration meets a
+// non-positive det or does not settle (a blended gradient with det 5 made of
+// round-off beside a 1e14 column).
 PolarDecomposition polarBySvd(const Eigen::Matrix3d& a) {
-  const Eigen::JacobiSVD<Eigen::Matrix3d> svd(a, Eigen::ComputeFullU | Eigen::ComputeFullV);
-  Eigen::Matrix3d u = svd.matrixU();
-  if ((u * svd.matrixV().transpose()).determinant() < 0.0) u.col(2) = -u.col(2);
   PolarDecomposition result;
-  result.rotation = u * svd.matrixV().transpose();
+  result.rotation = polar_detail::svdRotation(a);
   const Eigen::Matrix3d s = result.rotation.transpose() * a;
   result.stretch = 0.5 * (s + s.transpose());
   return result;
@@ -122,6 +118,13 @@ PolarDecomposition polarDecompose(const Eigen::Matrix3d& a) {
 }
 
 namespace polar_detail {
+
+Eigen::Matrix3d svdRotation(const Eigen::Matrix3d& a) {
+  const Eigen::JacobiSVD<Eigen::Matrix3d> svd(a, Eigen::ComputeFullU | Eigen::ComputeFullV);
+  Eigen::Matrix3d u = svd.matrixU();
+  if ((u * svd.matrixV().transpose()).determinant() < 0.0) u.col(2) = -u.col(2);
+  return u * svd.matrixV().transpose();
+}
 
 bool svdClosedForm(const Eigen::Matrix3d& a, Eigen::Matrix3d& u, Eigen::Vector3d& sigma,
                    Eigen::Matrix3d& v) {

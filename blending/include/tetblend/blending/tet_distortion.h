@@ -23,8 +23,9 @@ struct TetDistortion {
 TetDistortion tetDistortion(const Eigen::Matrix3d& f, double det);
 
 /// The reference figures: Eigen's JacobiSVD singular values and polar
-/// rotation U V^T, for any F (a method independent of polarDecompose's
-/// Newton iteration, which the tests compare it with).
+/// rotation U V^T (polar_detail::svdRotation), for any F: a method
+/// independent of polarDecompose's Newton iteration, which the tests compare
+/// it with.
 TetDistortion tetDistortionReference(const Eigen::Matrix3d& f, double det);
 
 }  // namespace tetblend

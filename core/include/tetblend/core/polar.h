@@ -66,6 +66,12 @@ constexpr double kClosedFormMaxCond = 1e3;
 /// condition number), so the result is as good as the Newton iteration's.
 constexpr double kClosedFormMaxResidual = 32 * 2.220446049250313e-16;
 
+/// The polar rotation U V^T of A from Eigen's Jacobi SVD A = U Sigma V^T,
+/// for any A with det A > 0 (not checked here); where rounding gives U V^T
+/// det -1 (sigma_min lost in A's round-off), the smallest singular direction
+/// is flipped, as det A > 0 asks. polarDecompose's fallback.
+Eigen::Matrix3d svdRotation(const Eigen::Matrix3d& a);
+
 /// Closed-form polar decomposition with stretch logarithm for
 /// well-conditioned A (3x3, det A > 0 assumed; not checked here): eigenvalues
 /// of A^T A by the trigonometric cubic (symEigenvalues, Kaji–Ochiai §4.1), the
