@@ -472,6 +472,7 @@ UntangleOutcome untangle(const Tets& tets, const std::vector<TetElement>& elemen
   double epsilon = std::min(1.0, kStartEpsilonPerDet * std::abs(minDet));
   double bestMinDet = minDet;
   int fewestInverted = inverted;
+  const int startInverted = inverted;
   int stagnant = 0;
   int focusInverted = inverted;
   // The attempt returns the best state it reached (fewest inverted tets, then
@@ -481,8 +482,10 @@ UntangleOutcome untangle(const Tets& tets, const std::vector<TetElement>& elemen
   // excluded tets.
   std::pair<int, double> bestState(inverted, -minDet);
   Vertices best = positions;
+  int notBelowStart = 0;  // rounds in a row ending with no fewer inverted tets than the start
   while (minDet <= 0.0 && outcome.rounds < effort.maxRounds && stagnant < effort.stallRounds &&
-         epsilon >= -kHopelessEpsilon * minDet) {
+         epsilon >= -kHopelessEpsilon * minDet &&
+         (effort.roundsToFallBelowStart == 0 || notBelowStart < effort.roundsToFallBelowStart)) {
     const EnergyChange change =
         minimiseNewton(*energy, epsilon, effort.iterationsPerRound, *solver, x);
     ++outcome.rounds;
@@ -499,6 +502,7 @@ UntangleOutcome untangle(const Tets& tets, const std::vector<TetElement>& elemen
       best = energy->positions();
     }
     fewestInverted = std::min(fewestInverted, inverted);
+    notBelowStart = inverted >= startInverted ? notBelowStart + 1 : 0;
     const double sigma = std::max(1.0 - change.after / change.before, effort.smallestDecrease);
     const double mu =
         (1.0 - sigma) * 0.5 * (minDet + std::sqrt(epsilon * epsilon + minDet * minDet));

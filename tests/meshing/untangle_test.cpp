@@ -163,12 +163,18 @@ TEST(Untangle, NarrowingTheRegionToTheLastInvertedTetsStillUntanglesThem) {
 // region around it invert more tets (54 at the start, 384 after the 40th
 // round when the last state was returned); the state returned must be the
 // best one reached, no worse than the start.
-TEST(Untangle, AHopelessFoldComesBackNoWorseThanItStarted) {
-  const TetMesh mesh = kuhnGrid();
-  const std::vector<TetElement> elements = buildTetElements(mesh);
+// The grid with the centre of its top face pushed out through its bottom face.
+Vertices hopelessFold(const TetMesh& mesh) {
   Vertices positions = mesh.vertices;
   for (int i = 3; i <= 5; ++i)
     for (int j = 3; j <= 5; ++j) positions(vertexIndex(i, j, kCells), 2) -= (kCells + 2.0) / kCells;
+  return positions;
+}
+
+TEST(Untangle, AHopelessFoldComesBackNoWorseThanItStarted) {
+  const TetMesh mesh = kuhnGrid();
+  const std::vector<TetElement> elements = buildTetElements(mesh);
+  Vertices positions = hopelessFold(mesh);
   const std::vector<int> before = invertedTets(positions, mesh.tets);
   ASSERT_FALSE(before.empty());
   double minDetBefore = INFINITY;
@@ -190,6 +196,39 @@ TEST(Untangle, AHopelessFoldComesBackNoWorseThanItStarted) {
   EXPECT_FALSE(after.empty());
   EXPECT_TRUE(after.size() < before.size() ||
               (after.size() == before.size() && outcome.minDet >= minDetBefore));
+}
+
+// UntangleEffort::roundsToFallBelowStart on the hopeless fold. Its first
+// rounds all end with no fewer inverted tets than at the start: 4 rounds
+// return the start bit for bit (the best state reached). With a limit of 4,
+// the attempt then stops after those 4 rounds; without one, it goes on.
+TEST(Untangle, AnAttemptThatNeverFallsBelowItsStartGivesUpAfterItsRounds) {
+  const TetMesh mesh = kuhnGrid();
+  const std::vector<TetElement> elements = buildTetElements(mesh);
+  const Vertices start = hopelessFold(mesh);
+  UntangleEffort brief;
+  brief.iterationsPerRound = 1;
+  brief.maxRounds = 4;
+  brief.minDetProgress = 0.0;  // any rise of min det F is progress: only the new limit stops
+  brief.stallRounds = brief.firstAttemptStallRounds = 1000;
+  Vertices positions = start;
+  const UntangleOutcome four =
+      untangle(mesh.tets, elements, interiorVertices(mesh), brief, positions);
+  ASSERT_EQ(four.rounds, 4);
+  ASSERT_TRUE(positions == start) << "a round within the first 4 fell below the start";
+
+  brief.maxRounds = 40;
+  positions = start;
+  const UntangleOutcome unlimited =
+      untangle(mesh.tets, elements, interiorVertices(mesh), brief, positions);
+  EXPECT_GT(unlimited.rounds, 4);
+
+  brief.roundsToFallBelowStart = 4;
+  positions = start;
+  const UntangleOutcome limited =
+      untangle(mesh.tets, elements, interiorVertices(mesh), brief, positions);
+  EXPECT_EQ(limited.rounds, 4);
+  EXPECT_TRUE(positions == start);
 }
 
 }  // namespace

@@ -92,6 +92,15 @@ struct UntangleEffort {
   /// 2026-11-29 left 16 clean frames of the lion's 48-frame gallop with
   /// tets instead of none, and took 154 s instead of 53).
   double smallestDecrease = 0.1;
+  /// An attempt gives up after this many rounds in a row that end with no
+  /// fewer inverted tets than it started with (0: no such limit). Clean
+  /// examples: no limit (the count first rises while the region relaxes,
+  /// then falls; see firstAttemptStallRounds). Examples whose surface
+  /// intersects itself: 8. Their smallest det F sits in the fold, which no
+  /// placement repairs, and creeps up there by more than minDetProgress
+  /// while the count grows: bench_meshing's 1 M-tet elbow went from 13 395
+  /// inverted tets to 32 669 in 25 rounds (7 s) and kept its start.
+  int roundsToFallBelowStart = 0;
 };
 
 /// Options of CompatibleTetBuilder, with their defaults.
