@@ -13,6 +13,7 @@
 #include <tbb/parallel_pipeline.h>
 #include <tbb/task_arena.h>
 
+#include "collapsed_faces.h"
 #include "half_edge_table.h"
 #include "inverted_tet_splits.h"
 #include "surface_interior.h"
@@ -239,8 +240,9 @@ class ComponentInteriors {
   std::map<int, std::unique_ptr<SurfaceInterior>> interiors_;
 };
 
-// The rigid simplices of `mesh` (rigidSimplices) that leave the solid of a
-// clean example (one whose surface does not intersect itself), the solid of
+// The rigid simplices of `mesh` (rigidSimplices) that leave the solid of an
+// embeddable example (one whose surface neither intersects itself nor
+// collapses faces), the solid of
 // their own tet component, as what to split: such an edge itself; such a
 // face through one of its rigid edges if it has one (the split frees the
 // face too), else the face. Sorted, edges first, so splitSimplices never
@@ -250,13 +252,13 @@ std::vector<Simplex> rigidSimplicesOutside(const TetMesh& mesh, int surfaceCount
                                            const std::vector<Vertices>& examples,
                                            const Triangles& triangles,
                                            const std::vector<int>& vertexComponent,
-                                           const std::vector<SelfIntersections>& found) {
+                                           const std::vector<char>& embeddable) {
   const std::vector<Simplex> rigid = rigidSimplices(mesh, surfaceCount, boundary);
   if (rigid.empty()) return {};
   const std::vector<int> faceComponent = faceComponents(triangles, vertexComponent);
   std::vector<std::vector<Simplex>> perExample(examples.size());
   tbb::parallel_for(std::size_t{0}, examples.size(), [&](std::size_t k) {
-    if (found[k].pairCount > 0) return;
+    if (!embeddable[k]) return;
     ComponentInteriors interiors(examples[k], triangles, faceComponent);
     for (const Simplex& simplex : rigid) {
       const auto& v = simplex.vertices;
@@ -286,11 +288,11 @@ std::vector<Simplex> rigidSimplicesOutside(const TetMesh& mesh, int surfaceCount
   return result;
 }
 
-// How hard to untangle an example: the whole interior if its surface is
-// clean, briefly and locally if it intersects itself (it cannot be valid).
-const UntangleEffort& effortFor(const SelfIntersections& found,
-                                const ExampleAwareOptions& options) {
-  return found.pairCount == 0 ? options.placement.untangleEffort : options.intersectingUntangle;
+// How hard to untangle an example: the whole interior if it can be embedded,
+// briefly and locally if its surface intersects itself or collapses faces
+// (it cannot be valid there).
+const UntangleEffort& effortFor(bool embeddable, const ExampleAwareOptions& options) {
+  return embeddable ? options.placement.untangleEffort : options.intersectingUntangle;
 }
 
 // `effort` measuring distortion against thickened slivers: a clean example's
@@ -388,16 +390,28 @@ CompatibleTetMeshes buildCompatibleTetMeshes(const TetMesh& rest, int surfaceVer
   const std::vector<int> vertexComponent = vertexComponents(rest);
   const std::vector<int> faceComponent = faceComponents(triangles, vertexComponent);
   meshes.selfIntersections.resize(exampleSurfaces.size());
+  meshes.collapsedFaces.resize(exampleSurfaces.size());
+  const Vertices restSurface = rest.vertices.topRows(surfaceVertexCount);
   tbb::parallel_for(std::size_t{0}, exampleSurfaces.size(), [&](std::size_t k) {
     meshes.selfIntersections[k] =
         findSelfIntersections(exampleSurfaces[k], triangles, 1, faceComponent);
+    meshes.collapsedFaces[k] = collapsedFaceCount(restSurface, exampleSurfaces[k], triangles);
   });
+  // Examples that every tet can be valid in: those whose surface neither
+  // intersects itself nor collapses a face (a part scaled to a point).
+  // Before the latter were told apart, CGAL's homer beside an armadillo
+  // scaled to a point took 837 s and 1.7 GB to prepare (the part untangled
+  // over the whole interior, then refined up to the growth bound).
+  std::vector<char> embeddable(exampleSurfaces.size());
+  for (std::size_t k = 0; k < exampleSurfaces.size(); ++k) {
+    embeddable[k] = meshes.selfIntersections[k].pairCount == 0 && meshes.collapsedFaces[k] == 0;
+  }
 
-  // Stage 1: rigid edges and faces that leave a clean example's solid, then
+  // Stage 1: rigid edges and faces that leave an embeddable example's solid, then
   // all-surface tets an example inverts (no placement can help either).
   const std::vector<Simplex> outside =
       rigidSimplicesOutside(meshes.rest, surfaceVertexCount, boundary, exampleSurfaces, triangles,
-                            vertexComponent, meshes.selfIntersections);
+                            vertexComponent, embeddable);
   if (!outside.empty() && options.maxRounds > 0) {
     meshes.rigidSimplicesOutside = static_cast<int>(outside.size());
     if (split(outside, meshes)) report("refine");
@@ -427,17 +441,16 @@ CompatibleTetMeshes buildCompatibleTetMeshes(const TetMesh& rest, int surfaceVer
   forEachExample(
       exampleCount, concurrentExamples(meshes.rest.tets.rows(), exampleCount), [&](std::size_t k) {
         CompatibleTetResult placed =
-            builder.place(exampleSurfaces[k], meshes.selfIntersections[k].pairCount > 0
-                                                  ? options.intersectingArapIterations
-                                                  : options.placement.arapIterations);
+            builder.place(exampleSurfaces[k], embeddable[k] ? options.placement.arapIterations
+                                                            : options.intersectingArapIterations);
         if (options.placement.untangle && !placed.invertedTets.empty()) {
-          untangleAgain(builder, effortFor(meshes.selfIntersections[k], options), placed);
+          untangleAgain(builder, effortFor(embeddable[k], options), placed);
         }
         meshes.examples[k] = std::move(placed);
         report("place");
       });
 
-  // Stage 3: refine where clean examples stay inverted, untangle again, one
+  // Stage 3: refine where embeddable examples stay inverted, untangle again, one
   // example at a time, the one with the fewest inverted tets first (a hopeless
   // example refined first would split the others' remaining inverted tets
   // too), each with its own budget of maxRounds rounds (a budget shared by
@@ -470,7 +483,7 @@ CompatibleTetMeshes buildCompatibleTetMeshes(const TetMesh& rest, int surfaceVer
   };
   std::vector<std::size_t> order;
   for (std::size_t k = 0; k < exampleSurfaces.size(); ++k) {
-    if (meshes.selfIntersections[k].pairCount == 0 && !meshes.examples[k].invertedTets.empty()) {
+    if (embeddable[k] && !meshes.examples[k].invertedTets.empty()) {
       order.push_back(k);
     }
   }
@@ -523,15 +536,14 @@ CompatibleTetMeshes buildCompatibleTetMeshes(const TetMesh& rest, int surfaceVer
     }
   }
   // Last, examples not measured on the final mesh are, and untangled again
-  // if their inverted tets were split; clean examples that still keep
+  // if their inverted tets were split; embeddable examples that still keep
   // inverted tets get one attempt against thickened slivers (thickenedEffort).
-  auto cleanAndInverted = [&](std::size_t k) {
-    return options.placement.untangle && meshes.selfIntersections[k].pairCount == 0 &&
-           !meshes.examples[k].invertedTets.empty();
+  auto embeddableAndInverted = [&](std::size_t k) {
+    return options.placement.untangle && embeddable[k] && !meshes.examples[k].invertedTets.empty();
   };
   std::vector<std::size_t> pending;
   for (std::size_t k = 0; k < exampleCount; ++k) {
-    if (measuredOn[k] != meshes.rest.tets.rows() || cleanAndInverted(k)) pending.push_back(k);
+    if (measuredOn[k] != meshes.rest.tets.rows() || embeddableAndInverted(k)) pending.push_back(k);
   }
   if (pending.empty()) return meshes;
   const UntangleEffort thickened = thickenedEffort(options.placement.untangleEffort);
@@ -544,11 +556,10 @@ CompatibleTetMeshes buildCompatibleTetMeshes(const TetMesh& rest, int surfaceVer
                      evaluateAgain(refined, example);
                      if (!example.invertedTets.empty() && options.placement.untangle &&
                          splitSinceUntangled(k)) {
-                       untangleAgain(refined, effortFor(meshes.selfIntersections[k], options),
-                                     example);
+                       untangleAgain(refined, effortFor(embeddable[k], options), example);
                      }
                    }
-                   if (cleanAndInverted(k)) untangleAgain(refined, thickened, example);
+                   if (embeddableAndInverted(k)) untangleAgain(refined, thickened, example);
                  });
   return meshes;
 }

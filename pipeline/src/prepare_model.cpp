@@ -24,7 +24,6 @@ namespace {
 
 using prepare_steps::advance;
 using prepare_steps::checkExamples;
-using prepare_steps::collapsedFaceCount;
 using prepare_steps::diagnosis;
 using prepare_steps::preparedPart;
 using prepare_steps::refuseInsideOut;
@@ -303,9 +302,7 @@ ModelData preparedAsIs(const SurfaceMesh& rest, const std::vector<SurfaceMesh>& 
           " tets cannot be embedded (worst volume ratio " +
           threeDigits(worstVolumeRatio(built.rest, example)) + ", first tet " +
           std::to_string(example.invertedTets.front()) + "); " +
-          diagnosis(built.selfIntersections[k + first],
-                    collapsedFaceCount(welding.surface.vertices, zipped[k].vertices,
-                                       meshed.surface.triangles));
+          diagnosis(built.selfIntersections[k + first], built.collapsedFaces[k + first]);
       if (options.strict) {
         throw InputError(what + ": leave out --strict to exclude those tets from the stitch");
       }

@@ -16,15 +16,6 @@
 #include "tetblend/pipeline/format_number.h"
 
 namespace tetblend::prepare_steps {
-namespace {
-
-// A face counts as collapsed below this area relative to the squared
-// bounding-box diagonal: edges of about 1e-6 of the model's size, a part
-// scaled to (nearly) a point. Faces that small in the rest too (caps of
-// nearly zero area, re-split for meshing) are not counted.
-constexpr double kCollapsedArea = 1e-12;
-
-}  // namespace
 
 void say(const std::function<void(const std::string&)>& sink, const std::string& line) {
   if (sink) sink(line);
@@ -61,25 +52,6 @@ std::string diagnosis(const SelfIntersections& found, std::size_t collapsedFaces
          (found.pairCount > 1 ? "s" : "") + ", first faces " +
          std::to_string(found.pairs.front().first) + " and " +
          std::to_string(found.pairs.front().second);
-}
-
-std::size_t collapsedFaceCount(const Vertices& rest, const Vertices& example,
-                               const Triangles& triangles) {
-  auto collapsedIn = [&](const Vertices& v) {
-    const double diagonal = (v.colwise().maxCoeff() - v.colwise().minCoeff()).norm();
-    const double floor = kCollapsedArea * diagonal * diagonal;
-    std::vector<char> small(static_cast<std::size_t>(triangles.rows()));
-    for (Eigen::Index f = 0; f < triangles.rows(); ++f) {
-      const Eigen::RowVector3d a = v.row(triangles(f, 0));
-      const Eigen::RowVector3d e1 = v.row(triangles(f, 1)) - a, e2 = v.row(triangles(f, 2)) - a;
-      small[static_cast<std::size_t>(f)] = !(0.5 * e1.cross(e2).norm() > floor);
-    }
-    return small;
-  };
-  const std::vector<char> inRest = collapsedIn(rest), inExample = collapsedIn(example);
-  std::size_t count = 0;
-  for (std::size_t f = 0; f < inRest.size(); ++f) count += inExample[f] && !inRest[f] ? 1 : 0;
-  return count;
 }
 
 void refuseSelfIntersecting(const Triangles& triangles, const std::vector<SurfaceMesh>& examples,

@@ -29,15 +29,9 @@ std::string threeDigits(double value);
 
 /// Why an example's tets cannot be embedded, in words: its surface
 /// intersects itself (how many face pairs, the first), or it collapses
-/// `collapsedFaces` faces (collapsedFaceCount), or the placement failed.
+/// `collapsedFaces` faces (CompatibleTetMeshes::collapsedFaces), or the
+/// placement failed.
 std::string diagnosis(const SelfIntersections& found, std::size_t collapsedFaces = 0);
-
-/// How many faces have (almost) zero area in `example` but not in `rest`
-/// (area below kCollapsedArea times the squared bounding-box diagonal): a
-/// part scaled to a point, as animations hide parts. No placement can give
-/// the tets on such faces a volume.
-std::size_t collapsedFaceCount(const Vertices& rest, const Vertices& example,
-                               const Triangles& triangles);
 
 /// --strict fails fast: an example whose surface intersects itself is
 /// refused before any meshing, since some of its tets can never be

@@ -13,10 +13,6 @@ namespace tetblend::apps_test {
 namespace {
 
 TEST(CollapsedPart, IsReportedAndBlendsStillReproduceTheExample) {
-#if defined(__SANITIZE_ADDRESS__)
-  GTEST_SKIP() << "53 s under AddressSanitizer (the collapsed part's untangling); the release "
-                  "suite runs it, and TetDistortion and Polar cover its numerics there";
-#endif
   const fs::path dir = scratchDir();
   makeSamples(dir);
   const SurfaceMesh bar = readSurface((dir / "bar_rest.obj").string());

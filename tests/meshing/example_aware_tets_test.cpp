@@ -186,6 +186,42 @@ TEST(ExampleAwareTets, RefinementStopsBeforeTheMeshGrowsFourfoldForAnUnrepairabl
   EXPECT_EQ(tets, stage1Tets);
 }
 
+// An example that scales one part to a point (as animations hide parts) is
+// treated as one whose surface intersects itself: its part's tets cannot
+// have a volume, so it is untangled briefly and drives no refinement. The
+// bar beside a small box, the box collapsed to its centroid, the bar twisted
+// by 6π (its all-surface tets inverted, which stage 1 splits). Stage 3 must
+// add nothing to the mesh of stages 1 and 2, and the untangling must stay
+// within intersectingUntangle's rounds (two attempts of at most 40). Before
+// the collapsed part was told apart, stage 3 refined it up to the growth
+// bound (CGAL's homer beside an armadillo scaled to a point: 837 s).
+TEST(ExampleAwareTets, AnExampleThatCollapsesAPartDrivesNoRefinement) {
+  const AllSurfaceBar bar = allSurfaceBar();
+  const SurfaceMesh boundary = boundarySurface(boxTetMesh(3, 3, 3, Eigen::Vector3d(0.6, 0.6, 0.6)));
+  SurfaceMesh box = removeVertices(boundary, unreferencedVertices(boundary));
+  box.vertices.col(1).array() += 2.0;
+  const SurfaceMesh rest = testing_surfaces::join(bar.surface, box);
+  const int surfaceCount = static_cast<int>(rest.vertices.rows());
+  Vertices collapsed = box.vertices;
+  collapsed.rowwise() = box.vertices.colwise().mean();
+  Vertices example(surfaceCount, 3);
+  example << bar.twisted, collapsed;
+  const TetMesh tets = tetrahedralize(rest);
+  auto build = [&](bool untangle) {
+    ExampleAwareOptions options;
+    options.placement.untangle = untangle;  // false: stages 1 and 2 only
+    return buildCompatibleTetMeshes(tets, surfaceCount, {example}, options);
+  };
+  const CompatibleTetMeshes stages12 = build(false);
+  const CompatibleTetMeshes built = build(true);
+  EXPECT_EQ(built.selfIntersections[0].pairCount, 0u);
+  EXPECT_EQ(built.collapsedFaces[0], static_cast<std::size_t>(box.triangles.rows()));
+  EXPECT_FALSE(built.examples[0].invertedTets.empty());
+  EXPECT_EQ(built.rest.tets.rows(), stages12.rest.tets.rows());
+  EXPECT_LE(built.examples[0].untangleRounds,
+            2 * ExampleAwareOptions{}.intersectingUntangle.maxRounds);
+}
+
 // Examples whose surface intersects itself take at most
 // intersectingArapIterations ARAP iterations, clean ones the placement's:
 // those of the bar's hard poses whose surface intersects itself, capped at 2.

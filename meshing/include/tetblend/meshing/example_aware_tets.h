@@ -40,9 +40,11 @@
 // a solid of its own: an example's faces of different components may
 // intersect (closed components meshed each on their own overlap,
 // component_meshing.h) and still leave it clean.
-// Examples whose surface intersects itself cannot be embedded where it does;
-// they are untangled only locally and briefly (intersectingUntangle) so they
-// fail fast, and they do not drive refinement.
+// Examples whose surface intersects itself cannot be embedded where it does,
+// nor examples that collapse faces to (almost) zero area (a part scaled to a
+// point) where they do; they are untangled only locally and briefly
+// (intersectingUntangle) so they fail fast, and they do not drive
+// refinement.
 
 #include <cstddef>
 #include <functional>
@@ -112,6 +114,11 @@ struct CompatibleTetMeshes {
   /// clean; the first pair listed), counting only faces of one tet component
   /// (components meshed each on their own may overlap, component_meshing.h).
   std::vector<SelfIntersections> selfIntersections;
+  /// Per example: how many faces its surface collapses to (almost) zero
+  /// area that are not so in the rest (a part scaled to a point). Such an
+  /// example, like one whose surface intersects itself, cannot be embedded
+  /// there: it is untangled briefly and does not drive refinement.
+  std::vector<std::size_t> collapsedFaces;
   int steinerPoints = 0;           ///< interior vertices added by refinement
   int rounds = 0;                  ///< refinement rounds performed (stages 1 and 3)
   int allSurfaceTetsInverted = 0;  ///< all-surface tets found inverted in stage 1
