@@ -1,4 +1,4 @@
-#include "collapsed_faces.h"
+#include "tetblend/meshing/collapsed_faces.h"
 
 #include <vector>
 
@@ -27,13 +27,15 @@ std::vector<char> collapsedIn(const Vertices& v, const Triangles& triangles) {
 
 }  // namespace
 
-std::size_t collapsedFaceCount(const Vertices& rest, const Vertices& example,
-                               const Triangles& triangles) {
-  const std::vector<char> inRest = collapsedIn(rest, triangles);
-  const std::vector<char> inExample = collapsedIn(example, triangles);
-  std::size_t count = 0;
-  for (std::size_t f = 0; f < inRest.size(); ++f) count += inExample[f] && !inRest[f] ? 1 : 0;
-  return count;
+std::vector<int> collapsedFaces(const Vertices& reference, const Vertices& pose,
+                                const Triangles& triangles) {
+  const std::vector<char> inReference = collapsedIn(reference, triangles);
+  const std::vector<char> inPose = collapsedIn(pose, triangles);
+  std::vector<int> result;
+  for (std::size_t f = 0; f < inReference.size(); ++f) {
+    if (inPose[f] && !inReference[f]) result.push_back(static_cast<int>(f));
+  }
+  return result;
 }
 
 }  // namespace tetblend

@@ -13,7 +13,6 @@
 #include <tbb/parallel_pipeline.h>
 #include <tbb/task_arena.h>
 
-#include "collapsed_faces.h"
 #include "half_edge_table.h"
 #include "inverted_tet_splits.h"
 #include "surface_interior.h"
@@ -21,6 +20,7 @@
 #include "tetblend/core/blas_threads.h"
 #include "tetblend/core/error.h"
 #include "tetblend/core/tet_geometry.h"
+#include "tetblend/meshing/collapsed_faces.h"
 #include "tetblend/meshing/self_intersection.h"
 #include "tetblend/meshing/tet_boundary.h"
 
@@ -395,7 +395,7 @@ CompatibleTetMeshes buildCompatibleTetMeshes(const TetMesh& rest, int surfaceVer
   tbb::parallel_for(std::size_t{0}, exampleSurfaces.size(), [&](std::size_t k) {
     meshes.selfIntersections[k] =
         findSelfIntersections(exampleSurfaces[k], triangles, 1, faceComponent);
-    meshes.collapsedFaces[k] = collapsedFaceCount(restSurface, exampleSurfaces[k], triangles);
+    meshes.collapsedFaces[k] = collapsedFaces(restSurface, exampleSurfaces[k], triangles).size();
   });
   // Examples that every tet can be valid in: those whose surface neither
   // intersects itself nor collapses a face (a part scaled to a point).

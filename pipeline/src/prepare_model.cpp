@@ -26,6 +26,7 @@ using prepare_steps::advance;
 using prepare_steps::checkExamples;
 using prepare_steps::diagnosis;
 using prepare_steps::preparedPart;
+using prepare_steps::refuseCollapsedRest;
 using prepare_steps::refuseInsideOut;
 using prepare_steps::refuseSelfIntersecting;
 using prepare_steps::roughCount;
@@ -199,8 +200,16 @@ ModelData preparedAsIs(const SurfaceMesh& rest, const std::vector<SurfaceMesh>& 
   try {
     meshed = meshedZippedRest(welding, restName, options, candidates);
   } catch (const InputError& refusal) {
-    return preparedPartByPart(rest, examples, restName, exampleNames, options, messages, welding,
-                              refusal);
+    try {
+      return preparedPartByPart(rest, examples, restName, exampleNames, options, messages, welding,
+                                refusal);
+    } catch (const InputError&) {
+      // Where meshing part by part fails too (a whole part collapsed, where
+      // single faces of zero area would get no tet), a frame to use as the
+      // rest is the remedy that can work; --strict keeps the first refusal.
+      if (!options.strict) refuseCollapsedRest(rest, examples, restName, exampleNames);
+      throw;
+    }
   }
   if (meshed.reorientedFaces > 0) {
     say(messages.warning, restName + ": " + std::to_string(meshed.reorientedFaces) +

@@ -10,6 +10,7 @@
 #include <Eigen/LU>
 
 #include "tetblend/core/error.h"
+#include "tetblend/meshing/collapsed_faces.h"
 #include "tetblend/meshing/surface_orientation.h"
 #include "tetblend/meshing/surface_validation.h"
 #include "tetblend/meshing/tetrisation.h"
@@ -52,6 +53,24 @@ std::string diagnosis(const SelfIntersections& found, std::size_t collapsedFaces
          (found.pairCount > 1 ? "s" : "") + ", first faces " +
          std::to_string(found.pairs.front().first) + " and " +
          std::to_string(found.pairs.front().second);
+}
+
+void refuseCollapsedRest(const SurfaceMesh& rest, const std::vector<SurfaceMesh>& examples,
+                         const std::string& restName,
+                         const std::vector<std::string>& exampleNames) {
+  for (std::size_t k = 0; k < examples.size(); ++k) {
+    if (examples[k].vertices.rows() != rest.vertices.rows()) continue;  // refused elsewhere
+    const std::vector<int> faces =
+        collapsedFaces(examples[k].vertices, rest.vertices, rest.triangles);
+    if (faces.empty()) continue;
+    const std::size_t n = faces.size();
+    throw InputError(
+        restName + ": " + std::to_string(n) + (n == 1 ? " face has" : " faces have") +
+        " (almost) zero area in the rest but not in " + exampleNames[k] + " (first: face " +
+        std::to_string(faces.front()) + "; a part scaled to a point?), so no tet can fill " +
+        (n == 1 ? "it" : "them") +
+        ": prepare with a frame where the part has its size as the rest, e.g. " + exampleNames[k]);
+  }
 }
 
 void refuseSelfIntersecting(const Triangles& triangles, const std::vector<SurfaceMesh>& examples,

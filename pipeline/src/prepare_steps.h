@@ -41,6 +41,16 @@ void refuseSelfIntersecting(const Triangles& triangles, const std::vector<Surfac
                             const std::vector<std::string>& exampleNames,
                             const std::vector<int>& faceComponent = {});
 
+/// Refuses, naming the remedy, a rest that collapses faces to (almost) zero
+/// area that an example gives an area (a part scaled to a point, as an
+/// animation's first frame may hide one): no tet can fill them, and
+/// removing them would break the examples' correspondence, but that example
+/// (or any frame where the part has its size) can be the rest. Does nothing
+/// when no example gives such faces an area. Called where the rest could
+/// not be meshed, neither whole nor part by part.
+void refuseCollapsedRest(const SurfaceMesh& rest, const std::vector<SurfaceMesh>& examples,
+                         const std::string& restName, const std::vector<std::string>& exampleNames);
+
 /// Refuses an example that turns a closed part of `rest` inside out, as a
 /// mirror does (a negative scale in an exporter): the part's enclosed volume
 /// changes sign, and the part intersects itself at no more face pairs than

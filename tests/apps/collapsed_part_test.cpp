@@ -4,7 +4,10 @@
 // the advice of a finer mesh, which cannot help), and blends at the
 // example's weights still reproduce it. Before, the blend at weight 1 was
 // refused: a quality figure's polar decomposition of a nearly singular
-// blended gradient threw.
+// blended gradient threw. A rest that hides a part is refused, naming a
+// frame that can be the rest.
+
+#include <algorithm>
 
 #include "apps_test_support.h"
 #include "test_surfaces.h"
@@ -12,8 +15,16 @@
 namespace tetblend::apps_test {
 namespace {
 
-TEST(CollapsedPart, IsReportedAndBlendsStillReproduceTheExample) {
-  const fs::path dir = scratchDir();
+// The samples' bar beside a small copy of it (two_rest.obj), and the bar
+// twisted by 4π beside the copy scaled to its centre (two_collapsed.obj),
+// written into `dir`.
+struct TwoParts {
+  SurfaceMesh rest;
+  SurfaceMesh collapsed;
+  Eigen::Index smallFaces = 0;
+};
+
+TwoParts writeTwoParts(const fs::path& dir) {
   makeSamples(dir);
   const SurfaceMesh bar = readSurface((dir / "bar_rest.obj").string());
   const SurfaceMesh twisted = readSurface((dir / "bar_twist4pi.obj").string());
@@ -22,10 +33,18 @@ TEST(CollapsedPart, IsReportedAndBlendsStillReproduceTheExample) {
   small.vertices.col(1).array() += 3.0;
   SurfaceMesh collapsed = small;
   collapsed.vertices.rowwise() = small.vertices.colwise().mean();
-  const SurfaceMesh rest = testing_surfaces::join(bar, small);
-  const SurfaceMesh example = testing_surfaces::join(twisted, collapsed);
-  writeSurface((dir / "two_rest.obj").string(), rest);
-  writeSurface((dir / "two_collapsed.obj").string(), example);
+  TwoParts parts{testing_surfaces::join(bar, small), testing_surfaces::join(twisted, collapsed),
+                 small.triangles.rows()};
+  writeSurface((dir / "two_rest.obj").string(), parts.rest);
+  writeSurface((dir / "two_collapsed.obj").string(), parts.collapsed);
+  return parts;
+}
+
+TEST(CollapsedPart, IsReportedAndBlendsStillReproduceTheExample) {
+  const fs::path dir = scratchDir();
+  const TwoParts parts = writeTwoParts(dir);
+  const SurfaceMesh& rest = parts.rest;
+  const SurfaceMesh& example = parts.collapsed;
 
   const fs::path model = dir / "m.tbm";
   const RunResult prepared = tetblend({"prepare", (dir / "two_rest.obj").string(),
@@ -33,7 +52,7 @@ TEST(CollapsedPart, IsReportedAndBlendsStillReproduceTheExample) {
                                       dir);
   ASSERT_EQ(prepared.code, 0) << prepared.err;
   EXPECT_NE(prepared.err.find("two_collapsed.obj: "), std::string::npos) << prepared.err;
-  EXPECT_NE(prepared.err.find("its surface collapses " + std::to_string(small.triangles.rows()) +
+  EXPECT_NE(prepared.err.find("its surface collapses " + std::to_string(parts.smallFaces) +
                               " faces to (almost) zero area"),
             std::string::npos)
       << prepared.err;
@@ -49,6 +68,32 @@ TEST(CollapsedPart, IsReportedAndBlendsStillReproduceTheExample) {
     const Vertices& want = std::string(weight) == "0" ? rest.vertices : example.vertices;
     EXPECT_LT(maxDistance(got, want), kInterpolationTolerance) << "weight " << weight;
   }
+}
+
+// The same pair the other way round: a rest that hides a part (an
+// animation's first frame may). No tet can fill the collapsed faces, and
+// removing them (as the degenerate-face advice says for a single face)
+// would break the examples' correspondence: prepare refuses with one line
+// that names a frame to use as the rest instead, and writes no model.
+TEST(CollapsedPart, InTheRestIsRefusedNamingAFrameThatCanBeTheRest) {
+  const fs::path dir = scratchDir();
+  const TwoParts parts = writeTwoParts(dir);
+  const fs::path model = dir / "m.tbm";
+  const std::string example = (dir / "two_rest.obj").string();
+  const RunResult prepared = tetblend(
+      {"prepare", (dir / "two_collapsed.obj").string(), example, "-o", model.string()}, dir);
+  EXPECT_NE(prepared.code, 0);
+  EXPECT_EQ(std::count(prepared.err.begin(), prepared.err.end(), '\n'), 1) << prepared.err;
+  EXPECT_NE(prepared.err.find(std::to_string(parts.smallFaces) +
+                              " faces have (almost) zero area in the rest but not in " + example),
+            std::string::npos)
+      << prepared.err;
+  EXPECT_NE(prepared.err.find(
+                "prepare with a frame where the part has its size as the rest, e.g. " + example),
+            std::string::npos)
+      << prepared.err;
+  EXPECT_EQ(prepared.err.find("MeshLab"), std::string::npos) << prepared.err;
+  EXPECT_FALSE(fs::exists(model));
 }
 
 }  // namespace

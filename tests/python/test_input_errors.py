@@ -35,6 +35,8 @@ PREPARE_CASES = [
     (REST, TRIANGLES, [], tetblend.InputError, ["at least one example"]),
     (REST, TRIANGLES, [REST * [-1.0, 1.0, 1.0]], tetblend.InputError,
      ["example_vertices[0]", "mirrored", "mirror it back"]),
+    (np.full_like(REST, 0.5), TRIANGLES, [REST], tetblend.InputError,
+     ["zero area in the rest but not in example_vertices[0]", "as the rest"]),
 ]
 
 
