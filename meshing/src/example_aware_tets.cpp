@@ -240,6 +240,44 @@ class ComponentInteriors {
   std::map<int, std::unique_ptr<SurfaceInterior>> interiors_;
 };
 
+// A part an example hides (every face of its component collapsed, as
+// animations scale a part to a point) is placed as this fraction of its rest
+// size about that point: its faces keep 1e-4 of their rest area, well above
+// collapsedFaces' threshold on meshes whose faces are not themselves nearly
+// collapsed.
+constexpr double kHiddenPartScale = 1e-2;
+
+// The surface `example` is placed as: each tet component whose faces it all
+// collapses replaced by the rest's component scaled by kHiddenPartScale about
+// the example's point. The other parts then get the placement of a clean
+// example (full untangling, refinement), which a part of no volume would
+// otherwise deny them; the caller puts the example's own surface back.
+Vertices hiddenPartsStandIn(const Vertices& rest, const Vertices& example,
+                            const Triangles& triangles, const std::vector<int>& faceComponent,
+                            const std::vector<int>& collapsed) {
+  std::map<int, std::pair<int, int>> faces;  // component: (faces, collapsed faces)
+  for (int component : faceComponent) ++faces[component].first;
+  for (int f : collapsed) ++faces[faceComponent[static_cast<std::size_t>(f)]].second;
+  Vertices standIn = example;
+  for (const auto& [component, count] : faces) {
+    if (count.first != count.second) continue;
+    std::vector<int> vertices;
+    for (std::size_t f = 0; f < faceComponent.size(); ++f) {
+      if (faceComponent[f] != component) continue;
+      for (int c = 0; c < 3; ++c) vertices.push_back(triangles(static_cast<Eigen::Index>(f), c));
+    }
+    sortUnique(vertices);
+    const Vertices restPart = rest(vertices, Eigen::all);
+    const Eigen::RowVector3d restCentre = restPart.colwise().mean();
+    const Eigen::RowVector3d point = example(vertices, Eigen::all).colwise().mean();
+    for (std::size_t i = 0; i < vertices.size(); ++i) {
+      standIn.row(vertices[i]) =
+          point + kHiddenPartScale * (restPart.row(static_cast<Eigen::Index>(i)) - restCentre);
+    }
+  }
+  return standIn;
+}
+
 // The rigid simplices of `mesh` (rigidSimplices) that leave the solid of an
 // embeddable example (one whose surface neither intersects itself nor
 // collapses faces), the solid of
@@ -392,33 +430,40 @@ CompatibleTetMeshes buildCompatibleTetMeshes(const TetMesh& rest, int surfaceVer
   meshes.selfIntersections.resize(exampleSurfaces.size());
   meshes.collapsedFaces.resize(exampleSurfaces.size());
   const Vertices restSurface = rest.vertices.topRows(surfaceVertexCount);
+  // The surfaces placed: the examples', with the parts they hide replaced
+  // by stand-ins (hiddenPartsStandIn).
+  std::vector<Vertices> surfaces = exampleSurfaces;
+  // Examples whose placed surface neither intersects itself nor collapses a
+  // face: every tet can be valid there. Before collapsed faces were told
+  // apart, CGAL's homer beside an armadillo scaled to a point took 837 s and
+  // 1.7 GB to prepare (the part untangled over the whole interior, then
+  // refined up to the growth bound).
+  std::vector<char> embeddable(exampleSurfaces.size());
   tbb::parallel_for(std::size_t{0}, exampleSurfaces.size(), [&](std::size_t k) {
     meshes.selfIntersections[k] =
         findSelfIntersections(exampleSurfaces[k], triangles, 1, faceComponent);
-    meshes.collapsedFaces[k] = collapsedFaces(restSurface, exampleSurfaces[k], triangles).size();
+    const std::vector<int> collapsed = collapsedFaces(restSurface, exampleSurfaces[k], triangles);
+    meshes.collapsedFaces[k] = collapsed.size();
+    if (!collapsed.empty()) {
+      surfaces[k] =
+          hiddenPartsStandIn(restSurface, exampleSurfaces[k], triangles, faceComponent, collapsed);
+    }
+    embeddable[k] =
+        meshes.selfIntersections[k].pairCount == 0 &&
+        (collapsed.empty() || collapsedFaces(restSurface, surfaces[k], triangles).empty());
   });
-  // Examples that every tet can be valid in: those whose surface neither
-  // intersects itself nor collapses a face (a part scaled to a point).
-  // Before the latter were told apart, CGAL's homer beside an armadillo
-  // scaled to a point took 837 s and 1.7 GB to prepare (the part untangled
-  // over the whole interior, then refined up to the growth bound).
-  std::vector<char> embeddable(exampleSurfaces.size());
-  for (std::size_t k = 0; k < exampleSurfaces.size(); ++k) {
-    embeddable[k] = meshes.selfIntersections[k].pairCount == 0 && meshes.collapsedFaces[k] == 0;
-  }
 
   // Stage 1: rigid edges and faces that leave an embeddable example's solid, then
   // all-surface tets an example inverts (no placement can help either).
-  const std::vector<Simplex> outside =
-      rigidSimplicesOutside(meshes.rest, surfaceVertexCount, boundary, exampleSurfaces, triangles,
-                            vertexComponent, embeddable);
+  const std::vector<Simplex> outside = rigidSimplicesOutside(
+      meshes.rest, surfaceVertexCount, boundary, surfaces, triangles, vertexComponent, embeddable);
   if (!outside.empty() && options.maxRounds > 0) {
     meshes.rigidSimplicesOutside = static_cast<int>(outside.size());
     if (split(outside, meshes)) report("refine");
   }
   for (int round = 0; round < options.maxRounds; ++round) {
     std::vector<int> bad;
-    for (const Vertices& example : exampleSurfaces) {
+    for (const Vertices& example : surfaces) {
       const std::vector<int> inverted =
           invertedAllSurfaceTets(meshes.rest.tets, surfaceVertexCount, example);
       bad.insert(bad.end(), inverted.begin(), inverted.end());
@@ -441,8 +486,8 @@ CompatibleTetMeshes buildCompatibleTetMeshes(const TetMesh& rest, int surfaceVer
   forEachExample(
       exampleCount, concurrentExamples(meshes.rest.tets.rows(), exampleCount), [&](std::size_t k) {
         CompatibleTetResult placed =
-            builder.place(exampleSurfaces[k], embeddable[k] ? options.placement.arapIterations
-                                                            : options.intersectingArapIterations);
+            builder.place(surfaces[k], embeddable[k] ? options.placement.arapIterations
+                                                     : options.intersectingArapIterations);
         if (options.placement.untangle && !placed.invertedTets.empty()) {
           untangleAgain(builder, effortFor(embeddable[k], options), placed);
         }
@@ -509,15 +554,14 @@ CompatibleTetMeshes buildCompatibleTetMeshes(const TetMesh& rest, int surfaceVer
     int sinceBest = 0;
     while (best > 0 && sinceBest < kPatience && rounds < options.maxRounds) {
       const std::vector<Simplex> simplices =
-          splitsForInverted(meshes.rest, meshes.examples[k].invertedTets, exampleSurfaces[k],
-                            triangles, surfaceVertexCount, boundary);
+          splitsForInverted(meshes.rest, meshes.examples[k].invertedTets, surfaces[k], triangles,
+                            surfaceVertexCount, boundary);
       if (simplices.empty()) break;
       if (sinceBest == 0) bestMeshes = meshes;
       if (!split(simplices, meshes, maxTets)) break;
       ++rounds;
       const CompatibleTetBuilder refined(meshes.rest, surfaceVertexCount, placement);
-      untangleRefined(refined, exampleSurfaces[k], options.placement.untangleEffort,
-                      meshes.examples[k]);
+      untangleRefined(refined, surfaces[k], options.placement.untangleEffort, meshes.examples[k]);
       untangledCount[k] = meshes.examples[k].invertedTets.size();
       measuredOn[k] = meshes.rest.tets.rows();
       report("refine");
@@ -545,22 +589,36 @@ CompatibleTetMeshes buildCompatibleTetMeshes(const TetMesh& rest, int surfaceVer
   for (std::size_t k = 0; k < exampleCount; ++k) {
     if (measuredOn[k] != meshes.rest.tets.rows() || embeddableAndInverted(k)) pending.push_back(k);
   }
-  if (pending.empty()) return meshes;
-  const UntangleEffort thickened = thickenedEffort(options.placement.untangleEffort);
-  const CompatibleTetBuilder refined(meshes.rest, surfaceVertexCount, placement);
-  forEachExample(pending.size(), concurrentExamples(meshes.rest.tets.rows(), pending.size()),
-                 [&](std::size_t i) {
-                   const std::size_t k = pending[i];
-                   CompatibleTetResult& example = meshes.examples[k];
-                   if (measuredOn[k] != meshes.rest.tets.rows()) {
-                     evaluateAgain(refined, example);
-                     if (!example.invertedTets.empty() && options.placement.untangle &&
-                         splitSinceUntangled(k)) {
-                       untangleAgain(refined, effortFor(embeddable[k], options), example);
+  if (!pending.empty()) {
+    const UntangleEffort thickened = thickenedEffort(options.placement.untangleEffort);
+    const CompatibleTetBuilder refined(meshes.rest, surfaceVertexCount, placement);
+    forEachExample(pending.size(), concurrentExamples(meshes.rest.tets.rows(), pending.size()),
+                   [&](std::size_t i) {
+                     const std::size_t k = pending[i];
+                     CompatibleTetResult& example = meshes.examples[k];
+                     if (measuredOn[k] != meshes.rest.tets.rows()) {
+                       evaluateAgain(refined, example);
+                       if (!example.invertedTets.empty() && options.placement.untangle &&
+                           splitSinceUntangled(k)) {
+                         untangleAgain(refined, effortFor(embeddable[k], options), example);
+                       }
                      }
-                   }
-                   if (embeddableAndInverted(k)) untangleAgain(refined, thickened, example);
-                 });
+                     if (embeddableAndInverted(k)) untangleAgain(refined, thickened, example);
+                   });
+  }
+  // Each example's own surface back where a stand-in of a hidden part was
+  // placed: the part's tets, of no volume, are measured inverted.
+  std::vector<std::size_t> standIns;
+  for (std::size_t k = 0; k < exampleCount; ++k) {
+    if (!(surfaces[k] == exampleSurfaces[k])) standIns.push_back(k);
+  }
+  if (!standIns.empty()) {
+    const CompatibleTetBuilder last(meshes.rest, surfaceVertexCount, placement);
+    for (std::size_t k : standIns) {
+      meshes.examples[k].vertices.topRows(surfaceVertexCount) = exampleSurfaces[k];
+      evaluateAgain(last, meshes.examples[k]);
+    }
+  }
   return meshes;
 }
 

@@ -40,11 +40,14 @@
 // a solid of its own: an example's faces of different components may
 // intersect (closed components meshed each on their own overlap,
 // component_meshing.h) and still leave it clean.
-// Examples whose surface intersects itself cannot be embedded where it does,
-// nor examples that collapse faces to (almost) zero area (a part scaled to a
-// point) where they do; they are untangled only locally and briefly
-// (intersectingUntangle) so they fail fast, and they do not drive
-// refinement.
+// Examples whose surface intersects itself cannot be embedded where it does;
+// they are untangled only locally and briefly (intersectingUntangle) so they
+// fail fast, and they do not drive refinement. So are examples that collapse
+// faces to (almost) zero area, except where the faces are whole parts (a
+// part scaled to a point, as animations hide parts): such a part is placed
+// as a small copy of itself, so the example's other parts are placed as in
+// a clean example, and the example's own surface is put back at the end
+// (the part's tets, of no volume, stay inverted).
 
 #include <cstddef>
 #include <functional>
@@ -115,9 +118,9 @@ struct CompatibleTetMeshes {
   /// (components meshed each on their own may overlap, component_meshing.h).
   std::vector<SelfIntersections> selfIntersections;
   /// Per example: how many faces its surface collapses to (almost) zero
-  /// area that are not so in the rest (a part scaled to a point). Such an
-  /// example, like one whose surface intersects itself, cannot be embedded
-  /// there: it is untangled briefly and does not drive refinement.
+  /// area that are not so in the rest (a part scaled to a point). No tet on
+  /// them can have a volume (see the top of this file for how such an
+  /// example is placed).
   std::vector<std::size_t> collapsedFaces;
   int steinerPoints = 0;           ///< interior vertices added by refinement
   int rounds = 0;                  ///< refinement rounds performed (stages 1 and 3)
