@@ -8,7 +8,7 @@ namespace tetblend {
 namespace {
 
 // A face counts as collapsed below this area relative to the squared
-// bounding-box diagonal (collapsedFaceCount).
+// bounding-box diagonal (collapsedFaces).
 constexpr double kCollapsedArea = 1e-12;
 
 // Per triangle: whether its area in `v` is below kCollapsedArea times the

@@ -14,6 +14,7 @@
 #include <tbb/task_arena.h>
 
 #include "half_edge_table.h"
+#include "hidden_parts.h"
 #include "inverted_tet_splits.h"
 #include "surface_interior.h"
 #include "tet_stellar_split.h"
@@ -240,44 +241,6 @@ class ComponentInteriors {
   std::map<int, std::unique_ptr<SurfaceInterior>> interiors_;
 };
 
-// A part an example hides (every face of its component collapsed, as
-// animations scale a part to a point) is placed as this fraction of its rest
-// size about that point: its faces keep 1e-4 of their rest area, well above
-// collapsedFaces' threshold on meshes whose faces are not themselves nearly
-// collapsed.
-constexpr double kHiddenPartScale = 1e-2;
-
-// The surface `example` is placed as: each tet component whose faces it all
-// collapses replaced by the rest's component scaled by kHiddenPartScale about
-// the example's point. The other parts then get the placement of a clean
-// example (full untangling, refinement), which a part of no volume would
-// otherwise deny them; the caller puts the example's own surface back.
-Vertices hiddenPartsStandIn(const Vertices& rest, const Vertices& example,
-                            const Triangles& triangles, const std::vector<int>& faceComponent,
-                            const std::vector<int>& collapsed) {
-  std::map<int, std::pair<int, int>> faces;  // component: (faces, collapsed faces)
-  for (int component : faceComponent) ++faces[component].first;
-  for (int f : collapsed) ++faces[faceComponent[static_cast<std::size_t>(f)]].second;
-  Vertices standIn = example;
-  for (const auto& [component, count] : faces) {
-    if (count.first != count.second) continue;
-    std::vector<int> vertices;
-    for (std::size_t f = 0; f < faceComponent.size(); ++f) {
-      if (faceComponent[f] != component) continue;
-      for (int c = 0; c < 3; ++c) vertices.push_back(triangles(static_cast<Eigen::Index>(f), c));
-    }
-    sortUnique(vertices);
-    const Vertices restPart = rest(vertices, Eigen::all);
-    const Eigen::RowVector3d restCentre = restPart.colwise().mean();
-    const Eigen::RowVector3d point = example(vertices, Eigen::all).colwise().mean();
-    for (std::size_t i = 0; i < vertices.size(); ++i) {
-      standIn.row(vertices[i]) =
-          point + kHiddenPartScale * (restPart.row(static_cast<Eigen::Index>(i)) - restCentre);
-    }
-  }
-  return standIn;
-}
-
 // The rigid simplices of `mesh` (rigidSimplices) that leave the solid of an
 // embeddable example (one whose surface neither intersects itself nor
 // collapses faces), the solid of
@@ -439,6 +402,7 @@ CompatibleTetMeshes buildCompatibleTetMeshes(const TetMesh& rest, int surfaceVer
   // 1.7 GB to prepare (the part untangled over the whole interior, then
   // refined up to the growth bound).
   std::vector<char> embeddable(exampleSurfaces.size());
+  std::vector<char> standIn(exampleSurfaces.size(), 0);  // surfaces[k] differs from the example's
   tbb::parallel_for(std::size_t{0}, exampleSurfaces.size(), [&](std::size_t k) {
     meshes.selfIntersections[k] =
         findSelfIntersections(exampleSurfaces[k], triangles, 1, faceComponent);
@@ -447,6 +411,7 @@ CompatibleTetMeshes buildCompatibleTetMeshes(const TetMesh& rest, int surfaceVer
     if (!collapsed.empty()) {
       surfaces[k] =
           hiddenPartsStandIn(restSurface, exampleSurfaces[k], triangles, faceComponent, collapsed);
+      standIn[k] = !(surfaces[k] == exampleSurfaces[k]);
     }
     embeddable[k] =
         meshes.selfIntersections[k].pairCount == 0 &&
@@ -608,13 +573,10 @@ CompatibleTetMeshes buildCompatibleTetMeshes(const TetMesh& rest, int surfaceVer
   }
   // Each example's own surface back where a stand-in of a hidden part was
   // placed: the part's tets, of no volume, are measured inverted.
-  std::vector<std::size_t> standIns;
-  for (std::size_t k = 0; k < exampleCount; ++k) {
-    if (!(surfaces[k] == exampleSurfaces[k])) standIns.push_back(k);
-  }
-  if (!standIns.empty()) {
+  if (std::find(standIn.begin(), standIn.end(), 1) != standIn.end()) {
     const CompatibleTetBuilder last(meshes.rest, surfaceVertexCount, placement);
-    for (std::size_t k : standIns) {
+    for (std::size_t k = 0; k < exampleCount; ++k) {
+      if (!standIn[k]) continue;
       meshes.examples[k].vertices.topRows(surfaceVertexCount) = exampleSurfaces[k];
       evaluateAgain(last, meshes.examples[k]);
     }

@@ -1,9 +1,10 @@
 #pragma once
 // Faces a pose collapses to (almost) zero area, as animations hide a part by
-// scaling it to a point. No placement gives the tets on such faces a volume,
-// so example_aware_tets.h treats an example that does so as it treats one
-// whose surface intersects itself, and a rest that does so cannot be meshed
-// there (prepare refuses it, naming a remedy).
+// scaling it to a point. No placement gives the tets on such faces a volume:
+// example_aware_tets.h places such an example's other parts around a
+// stand-in of the hidden part (or, where the faces are not whole parts,
+// treats it as self-intersecting), and a rest that collapses faces cannot be
+// meshed there (prepare refuses it, naming a remedy).
 
 #include <vector>
 
