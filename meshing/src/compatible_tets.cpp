@@ -346,8 +346,9 @@ struct CompatibleTetBuilder::Impl {
   // factorisation, 9 right-hand sides), averaged over each tet's corners and
   // projected back to SO(3).
   RotationField propagatedRotations(const Vertices& example) {
-    tbb::collaborative_call_once(trianglesOnce,
-                                 [this] { surfaceTriangles = boundarySurface(rest).triangles; });
+    tbb::collaborative_call_once(trianglesOnce, [this] {
+      surfaceTriangles = surfaceFirstBoundary(rest.tets, surfaceCount);
+    });
     Eigen::MatrixXd boundary = Eigen::MatrixXd::Zero(surfaceCount, 9);
     for (Eigen::Index f = 0; f < surfaceTriangles.rows(); ++f) {
       auto frame = [&](const Vertices& positions) {

@@ -386,7 +386,7 @@ CompatibleTetMeshes buildCompatibleTetMeshes(const TetMesh& rest, int surfaceVer
   };
   CompatibleTetMeshes meshes;
   meshes.rest = rest;
-  const Triangles triangles = boundarySurface(rest).triangles;
+  const Triangles triangles = surfaceFirstBoundary(rest.tets, surfaceVertexCount);
   const BoundarySimplices boundary = boundarySimplices(triangles);
   const std::vector<int> vertexComponent = vertexComponents(rest);
   const std::vector<int> faceComponent = faceComponents(triangles, vertexComponent);

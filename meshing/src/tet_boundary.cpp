@@ -18,9 +18,10 @@ namespace {
 constexpr std::array<std::array<int, 3>, 4> kOutwardFaces = {
     {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}}};
 
-}  // namespace
-
-SurfaceMesh boundarySurface(const TetMesh& mesh) {
+// The faces used by exactly one tet among those whose corners all lie below
+// `cornerLimit`, oriented outwards, in ascending order of their sorted
+// corners. Corners must be in [0, #V).
+Triangles facesUsedOnce(const Tets& tets, Eigen::Index cornerLimit) {
   // (sorted corners, outward corners) for every face, grouped by the
   // smallest corner (a counting sort over the vertices) and sorted within
   // each group: equal keys are adjacent, in ascending order. Linear but for
@@ -30,34 +31,33 @@ SurfaceMesh boundarySurface(const TetMesh& mesh) {
     std::array<int, 3> key;
     std::array<int, 3> oriented;
   };
-  const Eigen::Index vertexCount = mesh.vertices.rows();
-  for (Eigen::Index t = 0; t < mesh.tets.rows(); ++t) {
-    for (int a = 0; a < 4; ++a) {
-      if (mesh.tets(t, a) < 0 || mesh.tets(t, a) >= vertexCount) {
-        throw InputError("boundarySurface: tet " + std::to_string(t) + " has corner " +
-                         std::to_string(mesh.tets(t, a)) + ", not a vertex of the mesh's " +
-                         std::to_string(vertexCount));
-      }
-    }
-  }
   auto faceOf = [&](Eigen::Index t, const std::array<int, 3>& local) {
     Face face;
-    for (int k = 0; k < 3; ++k) face.oriented[k] = mesh.tets(t, local[k]);
+    for (int k = 0; k < 3; ++k) face.oriented[k] = tets(t, local[k]);
     face.key = face.oriented;
     std::sort(face.key.begin(), face.key.end());
     return face;
   };
-  std::vector<std::size_t> groupStart(static_cast<std::size_t>(vertexCount) + 1, 0);
-  for (Eigen::Index t = 0; t < mesh.tets.rows(); ++t) {
-    for (const auto& local : kOutwardFaces) ++groupStart[faceOf(t, local).key[0] + 1];
+  // A face below the limit needs three of its tet's corners below it.
+  auto hasFaceBelow = [&](Eigen::Index t) {
+    return (tets.row(t).array() < cornerLimit).count() >= 3;
+  };
+  std::vector<std::size_t> groupStart(static_cast<std::size_t>(cornerLimit) + 1, 0);
+  for (Eigen::Index t = 0; t < tets.rows(); ++t) {
+    if (!hasFaceBelow(t)) continue;
+    for (const auto& local : kOutwardFaces) {
+      const Face face = faceOf(t, local);
+      if (face.key[2] < cornerLimit) ++groupStart[face.key[0] + 1];
+    }
   }
   std::partial_sum(groupStart.begin(), groupStart.end(), groupStart.begin());
   std::vector<Face> faces(groupStart.back());
   std::vector<std::size_t> next(groupStart.begin(), groupStart.end() - 1);
-  for (Eigen::Index t = 0; t < mesh.tets.rows(); ++t) {
+  for (Eigen::Index t = 0; t < tets.rows(); ++t) {
+    if (!hasFaceBelow(t)) continue;
     for (const auto& local : kOutwardFaces) {
       const Face face = faceOf(t, local);
-      faces[next[static_cast<std::size_t>(face.key[0])]++] = face;
+      if (face.key[2] < cornerLimit) faces[next[static_cast<std::size_t>(face.key[0])]++] = face;
     }
   }
   for (std::size_t v = 0; v + 1 < groupStart.size(); ++v) {
@@ -78,13 +78,37 @@ SurfaceMesh boundarySurface(const TetMesh& mesh) {
     if (j - i == 1) boundary.push_back(faces[i].oriented);
     i = j;
   }
+  Triangles triangles(static_cast<Eigen::Index>(boundary.size()), 3);
+  for (size_t f = 0; f < boundary.size(); ++f) {
+    for (int k = 0; k < 3; ++k) triangles(static_cast<Eigen::Index>(f), k) = boundary[f][k];
+  }
+  return triangles;
+}
+
+}  // namespace
+
+SurfaceMesh boundarySurface(const TetMesh& mesh) {
+  const Eigen::Index vertexCount = mesh.vertices.rows();
+  for (Eigen::Index t = 0; t < mesh.tets.rows(); ++t) {
+    for (int a = 0; a < 4; ++a) {
+      if (mesh.tets(t, a) < 0 || mesh.tets(t, a) >= vertexCount) {
+        throw InputError("boundarySurface: tet " + std::to_string(t) + " has corner " +
+                         std::to_string(mesh.tets(t, a)) + ", not a vertex of the mesh's " +
+                         std::to_string(vertexCount));
+      }
+    }
+  }
   SurfaceMesh surface;
   surface.vertices = mesh.vertices;
-  surface.triangles.resize(static_cast<Eigen::Index>(boundary.size()), 3);
-  for (size_t f = 0; f < boundary.size(); ++f) {
-    for (int k = 0; k < 3; ++k) surface.triangles(static_cast<Eigen::Index>(f), k) = boundary[f][k];
-  }
+  surface.triangles = facesUsedOnce(mesh.tets, vertexCount);
   return surface;
+}
+
+Triangles surfaceFirstBoundary(const Tets& tets, int surfaceVertexCount) {
+  if (tets.size() > 0 && tets.minCoeff() < 0) {
+    throw InputError("surfaceFirstBoundary: a tet has a negative corner");
+  }
+  return facesUsedOnce(tets, surfaceVertexCount);
 }
 
 BoundaryFirstMesh reorderBoundaryFirst(const TetMesh& mesh) {

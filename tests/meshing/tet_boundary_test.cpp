@@ -59,6 +59,22 @@ TEST(TetBoundary, ReorderPutsBoundaryFirstAndKeepsGeometry) {
   EXPECT_NEAR(enclosedVolume(surface), 1.0, kRelativeTolerance);
 }
 
+// The oracle is boundarySurface, which groups every face; a 5×4×3 box has
+// tets with all four corners on the boundary, so faces between boundary
+// vertices that two tets share must be told apart from boundary faces.
+TEST(TetBoundary, SurfaceFirstBoundaryIsTheBoundaryOfABoundaryFirstMesh) {
+  const BoundaryFirstMesh reordered =
+      reorderBoundaryFirst(boxTetMesh(5, 4, 3, Eigen::Vector3d::Ones()));
+  const Tets& tets = reordered.mesh.tets;
+  int allBoundaryTets = 0;
+  for (Eigen::Index t = 0; t < tets.rows(); ++t) {
+    allBoundaryTets += tets.row(t).maxCoeff() < reordered.boundaryVertexCount;
+  }
+  ASSERT_GT(allBoundaryTets, 0);
+  const Triangles expected = boundarySurface(reordered.mesh).triangles;
+  EXPECT_EQ(surfaceFirstBoundary(tets, reordered.boundaryVertexCount), expected);
+}
+
 TEST(TetBoundary, FaceSharedByThreeTetsIsRejected) {
   TetMesh mesh;
   mesh.vertices = Vertices::Random(6, 3);

@@ -18,6 +18,14 @@ namespace tetblend {
 /// tet's corner is not a row of mesh.vertices.
 SurfaceMesh boundarySurface(const TetMesh& mesh);
 
+/// boundarySurface(mesh).triangles, the same rows in the same order, for a
+/// mesh whose boundary vertices are 0..surfaceVertexCount-1 and whose other
+/// vertices are interior (compatible_tets.h's layout): only faces with every
+/// corner below surfaceVertexCount can be boundary faces, so only those are
+/// grouped (at 1 M tets, a few % of the 4 #T faces). Tets' corners must be
+/// rows of the mesh's vertices.
+Triangles surfaceFirstBoundary(const Tets& tets, int surfaceVertexCount);
+
 /// A tet mesh renumbered so its boundary vertices come first.
 struct BoundaryFirstMesh {
   TetMesh mesh;                 ///< renumbered mesh (same tets, same order)
