@@ -482,10 +482,14 @@ UntangleOutcome untangle(const Tets& tets, const std::vector<TetElement>& elemen
   // excluded tets.
   std::pair<int, double> bestState(inverted, -minDet);
   Vertices best = positions;
+  bool fellBelowStart = false;
+  int risingRounds = 0;  // rounds in a row ending with more inverted tets than the last
+  int lastInverted = inverted;
   int notBelowStart = 0;  // rounds in a row ending with no fewer inverted tets than the start
   while (minDet <= 0.0 && outcome.rounds < effort.maxRounds && stagnant < effort.stallRounds &&
          epsilon >= -kHopelessEpsilon * minDet &&
-         (effort.roundsToFallBelowStart == 0 || notBelowStart < effort.roundsToFallBelowStart)) {
+         (effort.roundsToFallBelowStart == 0 || notBelowStart < effort.roundsToFallBelowStart) &&
+         (effort.risingRoundsToGiveUp == 0 || risingRounds < effort.risingRoundsToGiveUp)) {
     const EnergyChange change =
         minimiseNewton(*energy, epsilon, effort.iterationsPerRound, *solver, x);
     ++outcome.rounds;
@@ -503,6 +507,9 @@ UntangleOutcome untangle(const Tets& tets, const std::vector<TetElement>& elemen
     }
     fewestInverted = std::min(fewestInverted, inverted);
     notBelowStart = inverted >= startInverted ? notBelowStart + 1 : 0;
+    fellBelowStart = fellBelowStart || inverted < startInverted;
+    risingRounds = !fellBelowStart && inverted > lastInverted ? risingRounds + 1 : 0;
+    lastInverted = inverted;
     const double sigma = std::max(1.0 - change.after / change.before, effort.smallestDecrease);
     const double mu =
         (1.0 - sigma) * 0.5 * (minDet + std::sqrt(epsilon * epsilon + minDet * minDet));

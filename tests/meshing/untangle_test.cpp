@@ -231,5 +231,32 @@ TEST(Untangle, AnAttemptThatNeverFallsBelowItsStartGivesUpAfterItsRounds) {
   EXPECT_TRUE(positions == start);
 }
 
+// UntangleEffort::risingRoundsToGiveUp on the hopeless fold. From 54
+// inverted tets its rounds end with 106, 76, 98, 156, 216, ... (a scratch
+// trace): with the limit at 3, rounds 3 to 5 rise in a row and the attempt
+// stops after round 5, returning its best state, the start (no round fell
+// below it); without the limit it runs its 8 rounds.
+TEST(Untangle, AnAttemptWhoseCountKeepsRisingGivesUp) {
+  const TetMesh mesh = kuhnGrid();
+  const std::vector<TetElement> elements = buildTetElements(mesh);
+  const Vertices start = hopelessFold(mesh);
+  UntangleEffort brief;
+  brief.iterationsPerRound = 1;
+  brief.maxRounds = 8;
+  brief.minDetProgress = 0.0;  // any rise of min det F is progress: only the new limit stops
+  brief.stallRounds = brief.firstAttemptStallRounds = 1000;
+  Vertices positions = start;
+  const UntangleOutcome unlimited =
+      untangle(mesh.tets, elements, interiorVertices(mesh), brief, positions);
+  EXPECT_EQ(unlimited.rounds, 8);
+
+  brief.risingRoundsToGiveUp = 3;
+  positions = start;
+  const UntangleOutcome limited =
+      untangle(mesh.tets, elements, interiorVertices(mesh), brief, positions);
+  EXPECT_EQ(limited.rounds, 5);
+  EXPECT_TRUE(positions == start);
+}
+
 }  // namespace
 }  // namespace tetblend

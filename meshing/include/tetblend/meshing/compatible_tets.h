@@ -101,6 +101,18 @@ struct UntangleEffort {
   /// while the count grows: bench_meshing's 1 M-tet elbow went from 13 395
   /// inverted tets to 32 669 in 25 rounds (7 s) and kept its start.
   int roundsToFallBelowStart = 0;
+  /// An attempt gives up after this many rounds in a row that each end
+  /// with more inverted tets than the round before (the first: than the
+  /// start), unless its count has fallen below its start (0: no such
+  /// limit). Clean examples: no limit (see firstAttemptStallRounds).
+  /// Examples whose surface intersects itself: 4. Per-round counts over the
+  /// README's five prepare sets (529 attempts; 2026-12-02, scratch build):
+  /// none of the 35 attempts that rose 4 rounds in a row ended below its
+  /// start, while 4 that rose 3 in a row did (the elk's 291 -> 107); a
+  /// rise in the first round alone said nothing (an armadillo frame's 825
+  /// became 1634, then 26). bench_meshing's 1 M-tet elbow rises from its
+  /// first round to its 25th.
+  int risingRoundsToGiveUp = 0;
 };
 
 /// Options of CompatibleTetBuilder, with their defaults.
