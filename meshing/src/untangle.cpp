@@ -482,7 +482,6 @@ UntangleOutcome untangle(const Tets& tets, const std::vector<TetElement>& elemen
   // excluded tets.
   std::pair<int, double> bestState(inverted, -minDet);
   Vertices best = positions;
-  bool fellBelowStart = false;
   int risingRounds = 0;  // rounds in a row ending with more inverted tets than the last
   int lastInverted = inverted;
   int notBelowStart = 0;  // rounds in a row ending with no fewer inverted tets than the start
@@ -507,7 +506,7 @@ UntangleOutcome untangle(const Tets& tets, const std::vector<TetElement>& elemen
     }
     fewestInverted = std::min(fewestInverted, inverted);
     notBelowStart = inverted >= startInverted ? notBelowStart + 1 : 0;
-    fellBelowStart = fellBelowStart || inverted < startInverted;
+    const bool fellBelowStart = fewestInverted < startInverted;  // in some round so far
     risingRounds = !fellBelowStart && inverted > lastInverted ? risingRounds + 1 : 0;
     lastInverted = inverted;
     const double sigma = std::max(1.0 - change.after / change.before, effort.smallestDecrease);

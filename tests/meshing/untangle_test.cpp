@@ -198,6 +198,17 @@ TEST(Untangle, AHopelessFoldComesBackNoWorseThanItStarted) {
               (after.size() == before.size() && outcome.minDet >= minDetBefore));
 }
 
+// One Newton step per round, at most maxRounds rounds, and no stall test
+// (any rise of min det F is progress): only the limit under test stops.
+UntangleEffort withoutStallTests(int maxRounds) {
+  UntangleEffort effort;
+  effort.iterationsPerRound = 1;
+  effort.maxRounds = maxRounds;
+  effort.minDetProgress = 0.0;
+  effort.stallRounds = effort.firstAttemptStallRounds = 1000;
+  return effort;
+}
+
 // UntangleEffort::roundsToFallBelowStart on the hopeless fold. Its first
 // rounds all end with no fewer inverted tets than at the start: 4 rounds
 // return the start bit for bit (the best state reached). With a limit of 4,
@@ -206,11 +217,7 @@ TEST(Untangle, AnAttemptThatNeverFallsBelowItsStartGivesUpAfterItsRounds) {
   const TetMesh mesh = kuhnGrid();
   const std::vector<TetElement> elements = buildTetElements(mesh);
   const Vertices start = hopelessFold(mesh);
-  UntangleEffort brief;
-  brief.iterationsPerRound = 1;
-  brief.maxRounds = 4;
-  brief.minDetProgress = 0.0;  // any rise of min det F is progress: only the new limit stops
-  brief.stallRounds = brief.firstAttemptStallRounds = 1000;
+  UntangleEffort brief = withoutStallTests(4);
   Vertices positions = start;
   const UntangleOutcome four =
       untangle(mesh.tets, elements, interiorVertices(mesh), brief, positions);
@@ -240,11 +247,7 @@ TEST(Untangle, AnAttemptWhoseCountKeepsRisingGivesUp) {
   const TetMesh mesh = kuhnGrid();
   const std::vector<TetElement> elements = buildTetElements(mesh);
   const Vertices start = hopelessFold(mesh);
-  UntangleEffort brief;
-  brief.iterationsPerRound = 1;
-  brief.maxRounds = 8;
-  brief.minDetProgress = 0.0;  // any rise of min det F is progress: only the new limit stops
-  brief.stallRounds = brief.firstAttemptStallRounds = 1000;
+  UntangleEffort brief = withoutStallTests(8);
   Vertices positions = start;
   const UntangleOutcome unlimited =
       untangle(mesh.tets, elements, interiorVertices(mesh), brief, positions);
