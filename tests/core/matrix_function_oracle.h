@@ -1,6 +1,6 @@
 #pragma once
 // Eigen's MatrixFunctions (Pade approximation with scaling and squaring for
-// exp, inverse scaling and squaring for log, Schur-based sqrt) as the
+// exp, inverse scaling and squaring for log; sqrt as exp(log(A) / 2)) as the
 // independent oracle of the closed forms, compiled once in
 // matrix_function_oracle.cpp: its templates made every test file including it
 // several times slower to build.
@@ -30,7 +30,8 @@ auto logm(const Eigen::MatrixBase<Derived>& a) {
   return logmOf(a.eval());
 }
 
-/// Principal matrix square root of any 3x3 expression.
+/// Principal matrix square root of any 3x3 expression whose eigenvalues are
+/// off the closed negative real axis.
 template <typename Derived>
 auto sqrtm(const Eigen::MatrixBase<Derived>& a) {
   return sqrtmOf(a.eval());
