@@ -42,7 +42,7 @@ cholmod_factor* cholmodFactor(cholmod_sparse& view, cholmod_common& common) {
       throw;
     }
   }
-  letOpenMpShrinkTeams();
+  useOpenMpTeams(true);
   const bool factored = factor != nullptr && cholmod_factorize(&view, factor, &common) &&
                         common.status == CHOLMOD_OK && factor->minor >= factor->n;
   if (!factored || !factor->is_super || !factor->is_ll) {

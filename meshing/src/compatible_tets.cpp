@@ -6,6 +6,7 @@
 #include <limits>
 #include <mutex>
 #include <numeric>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -59,6 +60,15 @@ constexpr double kSupernodalPadding = 2.0;
 // 13 309 vertices (its 100 k row) CHOLMOD keeps AMD (26 ms) without trying
 // METIS, which would take 141 ms to save 30 % of the factorisation's flops.
 constexpr int kMetisOnlyInteriorVertices = 100000;
+
+// Flops of the interior's factorisation (CHOLMOD's count) from which it runs
+// on OpenBLAS's and OpenMP's thread teams. After their work the teams spin
+// on the cores that the examples' placements need, OpenBLAS's for 2^28
+// cycles (its THREAD_TIMEOUT, 0.11 s here; blas_threads.h, openmp_teams.h).
+// The 1 M row of bench_meshing (6.3e10 flops) took 6.5 s of embedding with
+// OpenBLAS's team and 7.2 s without; its 100 k row (6.5e8 flops) gains
+// nothing measurable from a team.
+constexpr double kTeamFactorisationFlops = 1e10;
 
 // UntangleEffort::thickenedReference thickens rest tets whose edge matrix
 // has a singular value below this fraction of its largest
@@ -184,11 +194,14 @@ struct CompatibleTetBuilder::Impl {
                 blasWorkspaceBytes(),
             "the interior's Cholesky factorisation (" + std::to_string(interiorCount) +
                 " interior vertices)");
-        letOpenMpShrinkTeams();
+        // Every other placement waits for this factorisation: a large one
+        // may use OpenBLAS's and OpenMP's thread teams even inside
+        // buildCompatibleTetMeshes.
+        const bool teams = solver.cholmod().fl >= kTeamFactorisationFlops;
+        useOpenMpTeams(teams);
+        std::optional<ParallelBlas> parallelBlas;
+        if (teams) parallelBlas.emplace();
 #endif
-        // Every other placement waits for this factorisation: OpenBLAS may
-        // use its thread team for it even inside buildCompatibleTetMeshes.
-        const ParallelBlas parallelBlas;
         solver.factorize(blocks.interiorLower);
         if (solver.info() != Eigen::Success) {
           throw NumericalError(

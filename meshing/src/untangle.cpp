@@ -379,7 +379,7 @@ class NewtonSolver {
     }
 #ifdef TETBLEND_HAVE_CHOLMOD
     if (supernodal_) {
-      letOpenMpShrinkTeams();
+      useOpenMpTeams(false);  // placements run beside it
       supernodalSolver_.factorize(matrix);
       return supernodalSolver_.info() == Eigen::Success;
     }

@@ -4,6 +4,8 @@
 
 #include <dlfcn.h>
 #include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include <memory>
 #include <thread>
@@ -73,6 +75,28 @@ TEST(BlasThreads, ScopesOnTwoThreadsEndSerialOnlyWhenBothHaveEnded) {
   EXPECT_EQ(openBlasThreads(), 1);
   first.reset();
   EXPECT_EQ(openBlasThreads(), kTeam);
+}
+
+// OpenBLAS stops its thread pool before a fork (tetblend forks for TetGen).
+// A serial scope after one must not start it again: openblas_set_num_threads
+// would, and the new workers spin for 0.1 s of a core (blas_threads.cpp).
+TEST(BlasThreads, ASerialScopeAfterAForkLeavesOpenBlasPoolStopped) {
+  const OpenBlasThreads team(kTeam);
+  if (!team.present()) GTEST_SKIP() << "the BLAS this binary loaded is not OpenBLAS";
+  const auto* poolRunning = static_cast<const int*>(::dlsym(RTLD_DEFAULT, "blas_server_avail"));
+  if (poolRunning == nullptr) GTEST_SKIP() << "this OpenBLAS does not export blas_server_avail";
+  const pid_t child = ::fork();
+  if (child == 0) ::_exit(0);
+  ASSERT_GT(child, 0);
+  ASSERT_EQ(::waitpid(child, nullptr, 0), child);
+  if (*poolRunning != 0) GTEST_SKIP() << "this OpenBLAS keeps its pool through a fork";
+  {
+    const SerialBlas serial;
+    EXPECT_EQ(openBlasThreads(), 1);
+    EXPECT_EQ(*poolRunning, 0) << "the serial scope started OpenBLAS's pool";
+  }
+  EXPECT_EQ(openBlasThreads(), kTeam);
+  EXPECT_EQ(*poolRunning, 0) << "the scope's end started OpenBLAS's pool";
 }
 
 TEST(BlasThreads, AParallelScopeOutsideSerialOnesChangesNothing) {

@@ -8,8 +8,8 @@
 // OPENBLAS_NUM_THREADS=1. One large factorisation that nothing runs beside
 // is the exception: 1 M tets, 6.5 s of embedding with the team, 7.2 s
 // without. These scopes switch the team at run time (the environment
-// variable is read only when OpenBLAS loads); with another BLAS they do
-// nothing.
+// variable is read only when OpenBLAS loads), without starting a team that a
+// fork stopped (blas_threads.cpp); with another BLAS they do nothing.
 
 namespace tetblend {
 
