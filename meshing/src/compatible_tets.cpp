@@ -66,8 +66,9 @@ constexpr int kMetisOnlyInteriorVertices = 100000;
 // on the cores that the examples' placements need, OpenBLAS's for 2^28
 // cycles (its THREAD_TIMEOUT, 0.11 s here; blas_threads.h, openmp_teams.h).
 // The 1 M row of bench_meshing (6.3e10 flops) took 6.5 s of embedding with
-// OpenBLAS's team and 7.2 s without; its 100 k row (6.5e8 flops) gains
-// nothing measurable from a team.
+// OpenBLAS's team and 7.2 s without; its 100 k row (6.5e8 flops) embedded in
+// 527-546 ms without teams, 607-832 ms with them (and with OpenBLAS's pool
+// restarted after TetGen's fork).
 constexpr double kTeamFactorisationFlops = 1e10;
 
 // UntangleEffort::thickenedReference thickens rest tets whose edge matrix
