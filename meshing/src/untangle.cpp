@@ -47,11 +47,10 @@ constexpr size_t kVertexGrain = 1024;
 // 0.01 stopped some attempts that a later, larger region would have started
 // from a better state: knot1's 720° twist then kept 8 tets.
 constexpr double kHopelessEpsilon = 0.001;
-// The first ε, relative to |min det F| at the start (at most 1, the paper's
-// start): a start that is nearly valid (a repair after a split, a larger
-// region after a smaller one) keeps its valid tets, where ε = 1 lets the
-// whole region relax first (on knot1's 720° twist, 1 inverted tet became
-// 25 that way).
+// The first ε, relative to |min det F| at the start (at most
+// UntangleEffort::largestStartEpsilon, 1 by default: the paper's start): a start that is nearly
+// valid (a repair after a split, a larger region after a smaller one) keeps its valid tets, where ε
+// = 1 lets the whole region relax first (on knot1's 720° twist, 1 inverted tet became 25 that way).
 constexpr double kStartEpsilonPerDet = 2.0;
 // Diagonal shift of the Newton matrix relative to its largest diagonal entry:
 // the projected Hessian is only semi-definite. Raised ×100 while the
@@ -469,7 +468,7 @@ UntangleOutcome untangle(const Tets& tets, const std::vector<TetElement>& elemen
   Eigen::VectorXd x = energy->freeVariables();
   // ε schedule of the paper (Alg. 1): start at the scale of the unit
   // Jacobian, then shrink according to the energy decrease of each round.
-  double epsilon = std::min(1.0, kStartEpsilonPerDet * std::abs(minDet));
+  double epsilon = std::min(effort.largestStartEpsilon, kStartEpsilonPerDet * std::abs(minDet));
   double bestMinDet = minDet;
   int fewestInverted = inverted;
   const int startInverted = inverted;

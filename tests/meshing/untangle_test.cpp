@@ -261,5 +261,33 @@ TEST(Untangle, AnAttemptWhoseCountKeepsRisingGivesUp) {
   EXPECT_TRUE(positions == start);
 }
 
+// UntangleEffort::largestStartEpsilon on the folded grid, one Newton step:
+// the first ε is min(largestStartEpsilon, 2 |min det F|), so every cap at or
+// above 2 |min det F| gives the same step bit for bit, and a cap below it
+// (0.1, where the fold's |min det F| is above 1) a different one.
+TEST(Untangle, TheFirstEpsilonIsCappedByLargestStartEpsilon) {
+  const TetMesh mesh = kuhnGrid();
+  const std::vector<TetElement> elements = buildTetElements(mesh);
+  const Vertices start = foldedGrid(mesh);
+  double minDet = INFINITY;
+  for (Eigen::Index t = 0; t < mesh.tets.rows(); ++t) {
+    minDet = std::min(minDet,
+                      deformationGradient(start, mesh.tets.row(t), elements[static_cast<size_t>(t)])
+                          .determinant());
+  }
+  ASSERT_LT(minDet, -0.5) << "the fold no longer puts 2 |min det F| above 1";
+  const auto oneStep = [&](double largestStartEpsilon) {
+    UntangleEffort effort = withoutStallTests(1);
+    effort.largestStartEpsilon = largestStartEpsilon;
+    Vertices positions = start;
+    untangle(mesh.tets, elements, interiorVertices(mesh), effort, positions);
+    return positions;
+  };
+  const Vertices uncapped = oneStep(1e6);
+  ASSERT_FALSE(uncapped == start) << "one step left the fold unchanged";
+  EXPECT_TRUE(oneStep(2.0 * std::abs(minDet)) == uncapped);
+  EXPECT_FALSE(oneStep(0.1) == uncapped);
+}
+
 }  // namespace
 }  // namespace tetblend

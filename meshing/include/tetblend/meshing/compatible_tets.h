@@ -113,6 +113,12 @@ struct UntangleEffort {
   /// became 1634, then 26). bench_meshing's 1 M-tet elbow rises from its
   /// first round to its 25th.
   int risingRoundsToGiveUp = 0;
+  /// The largest first ε (untangle.cpp starts at twice |min det F|, at most
+  /// this). Clean examples: 1, the start of Garanzha et al. (2021), Alg. 1.
+  /// Examples whose surface intersects itself: 0.4. Their fold keeps
+  /// min det F far below −0.5, so every attempt started at ε = 1 and let
+  /// the whole free region relax before the fold's tets were pushed back.
+  double largestStartEpsilon = 1.0;
 };
 
 /// Options of CompatibleTetBuilder, with their defaults.
