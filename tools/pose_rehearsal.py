@@ -111,19 +111,19 @@ def rehearse(args, mesh):
     if run.returncode != 0:
         error = next((l for l in lines if "error" in l), "?")
         return f"| {name} | refused: {error[:120]} |"
-    warnings = [l for l in lines if "tets cannot be embedded" in l]
+    warnings = [l for l in lines if re.search(r"\d+ tets? cannot be embedded", l)]
     clean = sum("does not intersect itself" in l for l in warnings)
     note = next((l for l in lines if "Steiner points" in l), None)
     if note is not None:
         tets, steiner, excluded = re.search(
-            r": (\S+(?: [kM])?) tets, .*\((\d+) Steiner points.*; (\d+) tets excluded",
+            r": (\S+(?: [kM])?) tets, .*\((\d+) Steiner points?.*; (\d+) tets? excluded",
             note).groups()
     else:  # components prepared each on its own: no summary of the whole
         whole = next((l for l in lines if "tets in all)" in l), "")
         found = re.search(r"\((\S+(?: [kM])?) tets in all\)", whole)
         tets = found.group(1) if found else "?"
         steiner = "—"
-        excluded = sum(int(re.search(r"(\d+) tets cannot be embedded", l).group(1))
+        excluded = sum(int(re.search(r"(\d+) tets? cannot be embedded", l).group(1))
                        for l in warnings)
     return (f"| {name} | {tets} | {steiner} | {excluded} | {len(warnings) - clean} | {clean} "
             f"| {seconds:.1f} |")

@@ -24,6 +24,7 @@ namespace {
 
 using prepare_steps::advance;
 using prepare_steps::checkExamples;
+using prepare_steps::counted;
 using prepare_steps::diagnosis;
 using prepare_steps::preparedPart;
 using prepare_steps::refuseCollapsedRest;
@@ -69,8 +70,8 @@ std::string separatedRestWarning(const std::string& restName,
             " % of the bounding-box diagonal), and the rest is embedded in them";
   }
   if (embedded.invertedTets.empty()) return line + " with no tet inverted";
-  return line + "; " + std::to_string(embedded.invertedTets.size()) +
-         " tets of the rest cannot be embedded (worst volume ratio " +
+  return line + "; " + counted(embedded.invertedTets.size(), "tet") +
+         " of the rest cannot be embedded (worst volume ratio " +
          threeDigits(worstVolumeRatio(tets, embedded)) + ", first tet " +
          std::to_string(embedded.invertedTets.front()) +
          "): they are left out of the stitch of every blend";
@@ -307,8 +308,8 @@ ModelData preparedAsIs(const SurfaceMesh& rest, const std::vector<SurfaceMesh>& 
     CompatibleTetResult& example = built.examples[k + first];
     if (!example.invertedTets.empty()) {
       const std::string what =
-          exampleNames[k] + ": " + std::to_string(example.invertedTets.size()) +
-          " tets cannot be embedded (worst volume ratio " +
+          exampleNames[k] + ": " + counted(example.invertedTets.size(), "tet") +
+          " cannot be embedded (worst volume ratio " +
           threeDigits(worstVolumeRatio(built.rest, example)) + ", first tet " +
           std::to_string(example.invertedTets.front()) + "); " +
           diagnosis(built.selfIntersections[k + first], built.collapsedFaces[k + first]);
@@ -337,10 +338,10 @@ ModelData preparedAsIs(const SurfaceMesh& rest, const std::vector<SurfaceMesh>& 
                 " triangles, no new vertices (the blended surfaces keep the input's faces)";
   say(messages.note, restName + ": " + roughCount(model.rest.tets.rows()) + " tets, " +
                          std::to_string(model.rest.vertices.rows()) + " vertices (" +
-                         std::to_string(built.steinerPoints) +
-                         " Steiner points added for the examples in " +
-                         std::to_string(built.rounds) + " rounds; " +
-                         std::to_string(model.excludedTets.size()) + " tets excluded)" + filled);
+                         counted(static_cast<std::size_t>(built.steinerPoints), "Steiner point") +
+                         " added for the examples in " +
+                         counted(static_cast<std::size_t>(built.rounds), "round") + "; " +
+                         counted(model.excludedTets.size(), "tet") + " excluded)" + filled);
   return model;
 }
 

@@ -32,6 +32,10 @@ std::string roughCount(long long n) {
   return std::to_string(n);
 }
 
+std::string counted(std::size_t n, const std::string& noun) {
+  return std::to_string(n) + " " + noun + (n == 1 ? "" : "s");
+}
+
 std::string threeDigits(double value) {
   char buffer[32];
   std::snprintf(buffer, sizeof buffer, "%.3g", value);

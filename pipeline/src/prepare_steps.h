@@ -24,6 +24,9 @@ void advance(const PrepareMessages& messages, std::size_t steps);
 /// "1.34 M" / "134 k" / "950": a tet count people read at a glance.
 std::string roughCount(long long n);
 
+/// "1 tet" / "3 tets": `n` and `noun`, plural unless n is 1.
+std::string counted(std::size_t n, const std::string& noun);
+
 /// `value` with three significant digits ("-0.0462", "1.5e+03").
 std::string threeDigits(double value);
 

@@ -42,7 +42,7 @@ while IFS=$'\t' read -r set model rest dir; do
   tail -n 1 "$log" >&2
   # A rest prepared part by part prints no whole-model "N tets excluded" note:
   # the model's own count of excluded tets then comes from inspect (untimed).
-  if ! grep -q 'tets excluded)' "$log" && [ -f "$OUT/${set}_$model.tbm" ]; then
+  if ! grep -Eq 'tets? excluded\)' "$log" && [ -f "$OUT/${set}_$model.tbm" ]; then
     "$TB" inspect "$OUT/${set}_$model.tbm" > "$OUT/${set}_$model.inspect" 2>&1 < /dev/null
   fi
   rm -f "$OUT/${set}_$model.tbm"   # models are large; the logs hold what is measured

@@ -10,13 +10,13 @@ from collections import OrderedDict
 out, manifest = sys.argv[1], sys.argv[2]
 SETS = ["twists", "harsh", "lion", "anim100", "openholed"]
 
-EX = re.compile(r"^tetblend: warning: (?P<name>.+?): (?P<n>\d+) tets cannot be embedded "
+EX = re.compile(r"^tetblend: warning: (?P<name>.+?): (?P<n>\d+) tets? cannot be embedded "
                 r"\(worst volume ratio [^)]*\); (?P<why>its surface does not intersect itself|"
                 r"its surface intersects itself)")
 REST = re.compile(r"^tetblend: warning: (?P<name>.+?): its surface intersects itself at .*?; "
-                  r"(?P<n>\d+) tets of the rest cannot be embedded")
+                  r"(?P<n>\d+) tets? of the rest cannot be embedded")
 NOTE = re.compile(r"^tetblend: .*?: (?P<tets>\S+(?: [kM])?) tets, \d+ vertices \((?P<steiner>\d+) "
-                  r"Steiner points added .*?; (?P<union>\d+) tets excluded\)")
+                  r"Steiner points? added .*?; (?P<union>\d+) tets? excluded\)")
 ALL = re.compile(r"\((?P<tets>\S+(?: [kM])?) tets in all\)")
 TIMELINE = re.compile(r"^(?P<s>[\d.]+) s (?P<kb>\d+) KB$")
 
