@@ -97,7 +97,7 @@ struct ExampleAwareOptions {
   /// rounds instead of 8; see the README, "Self-intersecting examples whose
   /// count keeps rising". Starting at ε ≤ 0.4 instead of 1
   /// (largestStartEpsilon; 2026-12-03, fourteenth session): the sets
-  /// excluded 1.7 % fewer tets (46 700 -> 45 916) in 12 % less time, the
+  /// excluded 1.7 % fewer tets (46 700 -> 45 916) in about the same time, the
   /// same clean frames; see the README, "The first ε of self-intersecting
   /// examples".
   UntangleEffort intersectingUntangle{3, 1, 40, 1e-3, false, 4, 4, 0.2, 8, 4, 0.4};
