@@ -1,7 +1,10 @@
 // tetblend blend: one blended shape from a model (or straight from surface
 // files) at one weight vector.
 
+#include <algorithm>
 #include <memory>
+#include <string>
+#include <vector>
 
 #include "blend_options.h"
 #include "blend_output.h"
@@ -18,6 +21,42 @@
 namespace tetblend::cli {
 
 namespace {
+
+// Slack on Σ w ≤ 1: weights read from decimal text (0.1,0.2,0.7) sum to 1
+// only to rounding, a few units of 1e-16.
+constexpr double kWeightSumSlack = 1e-12;
+
+// Whether an example's weight or the rest's, 1 − Σ w, lies outside [0, 1].
+bool extrapolates(const std::vector<double>& weights) {
+  double sum = 0.0;
+  for (double w : weights) {
+    if (w < 0.0 || w > 1.0) return true;
+    sum += w;
+  }
+  return sum > 1.0 + kWeightSumSlack;
+}
+
+// The parenthesis of blend's warning about inverted tets: the cell arrays
+// `written` to the .vtu that mark them, how many are tets left out of the
+// stitch, and whether the weights extrapolate.
+std::string invertedWhy(const BlendedShape& shape, const std::vector<double>& weights,
+                        const std::vector<NamedArray>& written) {
+  const auto has = [&](const std::string& name) {
+    return std::any_of(written.begin(), written.end(),
+                       [&](const NamedArray& array) { return array.name == name; });
+  };
+  std::vector<std::string> parts;
+  if (has("inverted")) parts.emplace_back("cell array 'inverted'");
+  if (shape.invertedExcluded > 0) {
+    parts.push_back(std::to_string(shape.invertedExcluded) +
+                    " of them are left out of the stitch, since some example cannot embed them" +
+                    (has("excluded") ? ": cell array 'excluded'" : ""));
+  }
+  if (extrapolates(weights)) parts.emplace_back("weights outside [0, 1] extrapolate");
+  std::string text;
+  for (const std::string& part : parts) text += (text.empty() ? " (" : "; ") + part;
+  return text.empty() ? text : text + ")";
+}
 
 struct BlendArgs {
   std::string model;
@@ -67,16 +106,17 @@ void runBlend(const BlendArgs& a) {
   progress.advance();
   const BlendedShape shape = blendShape(blender, model, weights, method, figures);
   progress.advance();
-  writeBlendResult(a.output, model, shape.vertices,
-                   selectQualityArrays(shape.cellData, arrays, "--quality-arrays"), formats,
-                   compression);
+  const std::vector<NamedArray> written =
+      extensionOf(a.output) == ".vtu"
+          ? selectQualityArrays(shape.cellData, arrays, "--quality-arrays")
+          : std::vector<NamedArray>{};
+  writeBlendResult(a.output, model, shape.vertices, written, formats, compression);
   progress.advance();
   progress.finish();
   if (shape.quality.invertedCount > 0) {
     printWarning(a.output + ": " + std::to_string(shape.quality.invertedCount) + " of " +
                  std::to_string(model.rest.tets.rows()) + " tets are inverted at weights " +
-                 weightsText(a.weights) +
-                 " (cell array 'inverted'; weights outside [0, 1] extrapolate)");
+                 weightsText(a.weights) + invertedWhy(shape, weights, written));
   }
 }
 

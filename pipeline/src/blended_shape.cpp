@@ -21,9 +21,8 @@ NamedArray cellArray(const std::string& name, const std::vector<double>& values)
 std::vector<Eigen::Matrix3d> targetsOfAllTets(const ModelData& model,
                                               const std::vector<Eigen::Matrix3d>& stitched) {
   if (stitched.empty()) return {};
-  std::vector<Eigen::Matrix3d> all(
-      static_cast<std::size_t>(model.rest.tets.rows()),
-      Eigen::Matrix3d::Constant(kNaN));
+  std::vector<Eigen::Matrix3d> all(static_cast<std::size_t>(model.rest.tets.rows()),
+                                   Eigen::Matrix3d::Constant(kNaN));
   std::size_t next = 0;  // model.excludedTets is ascending
   std::size_t kept = 0;
   for (std::size_t t = 0; t < all.size(); ++t) {
@@ -86,7 +85,10 @@ BlendedShape blendShape(const ShapeBlender& blender, const ModelData& model,
     shape.cellData.push_back(cellArray("target_residual", q.stitchResidual));
   if (excludes) {
     std::vector<double> excluded(static_cast<std::size_t>(model.rest.tets.rows()), 0.0);
-    for (int t : model.excludedTets) excluded[static_cast<std::size_t>(t)] = 1.0;
+    for (int t : model.excludedTets) {
+      excluded[static_cast<std::size_t>(t)] = 1.0;
+      shape.invertedExcluded += q.inverted[static_cast<std::size_t>(t)];
+    }
     shape.cellData.push_back(cellArray("excluded", excluded));
   }
   shape.vertices = std::move(result.vertices);

@@ -81,6 +81,40 @@ TEST_F(ExcludedTets, BlendsStillInterpolateTheRestAndEveryExample) {
   }
 }
 
+// At the self-intersecting example's unit weight its excluded tets are
+// inverted (the fold). blend's warning says how many of the inverted tets
+// are excluded ones, the same count as the .vtu's two cell arrays, and does
+// not call weights in [0, 1] an extrapolation.
+TEST_F(ExcludedTets, BlendWarningCountsTheInvertedTetsLeftOutOfTheStitch) {
+  const fs::path model = dir_ / "limb.tbm";
+  ASSERT_EQ(tetblend(prepareArgs(model), dir_).code, 0);
+  const fs::path out = dir_ / "folded.vtu";
+  const RunResult r = tetblend({"blend", model.string(), "-w", "0,1", "-o", out.string()}, dir_);
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto vtu = readVtu(out);
+  vtkDataArray* inverted = vtu->GetCellData()->GetArray("inverted");
+  vtkDataArray* excluded = vtu->GetCellData()->GetArray("excluded");
+  ASSERT_NE(inverted, nullptr);
+  ASSERT_NE(excluded, nullptr);
+  int invertedCount = 0, invertedExcluded = 0;
+  for (vtkIdType j = 0; j < inverted->GetNumberOfTuples(); ++j) {
+    if (inverted->GetTuple1(j) != 1.0) continue;
+    ++invertedCount;
+    if (excluded->GetTuple1(j) == 1.0) ++invertedExcluded;
+  }
+  ASSERT_GT(invertedExcluded, 0) << "the fold inverts no excluded tet at its own weight";
+  EXPECT_NE(
+      r.err.find(std::to_string(invertedCount) + " of " + std::to_string(vtu->GetNumberOfCells()) +
+                 " tets are inverted at weights 0,1"),
+      std::string::npos)
+      << r.err;
+  EXPECT_NE(
+      r.err.find("; " + std::to_string(invertedExcluded) + " of them are left out of the stitch"),
+      std::string::npos)
+      << r.err;
+  EXPECT_EQ(r.err.find("extrapolate"), std::string::npos) << r.err;
+}
+
 TEST_F(ExcludedTets, StrictRefusesWithOneLineAndNoFile) {
   std::vector<std::string> args = prepareArgs(dir_ / "strict.tbm");
   args.push_back("--strict");

@@ -19,6 +19,10 @@ struct BlendedShape {
   Vertices vertices;                 ///< #V by 3, the model's vertex order
   std::vector<NamedArray> cellData;  ///< per-tet arrays (see blendShape)
   QualitySummary quality;            ///< summarizeQuality of the cell arrays
+  /// Inverted tets among the model's excluded ones (ModelData::excludedTets:
+  /// tets that cannot be embedded in some example, so blends near that
+  /// example invert them too).
+  int invertedExcluded = 0;
 };
 
 /// blender.blend(weights, method), with the weights named in a DomainError
