@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <random>
 
 #include "blending_test_support.h"
@@ -69,6 +70,34 @@ TEST_P(StitchBackends, CompatibleTargetFieldIsReproducedExactly) {
   const Vertices solved = solver.solve(gradients, solver.componentCentroids(target));
   EXPECT_LT(maxRowDistance(solved, target), kExactRelative * boundingBoxDiagonal(target));
   EXPECT_LT(solver.energy(solved, gradients), kExactEnergy);
+}
+
+// A mesh 10^6 times its size from the origin (a scan in survey
+// coordinates): the solve works on positions relative to each component's
+// centroid, and the centroid is added back with one rounding, so a
+// compatible target comes back to within kFarUlps ulps of its coordinates'
+// size (the plain sums of coordinates that the centroids once were missed
+// it by 10-20 ulps on a posed hand, above 1e-9 of its diagonal).
+constexpr double kFarOffset = 1e6;
+constexpr double kFarUlps = 2.0;
+
+TEST_P(StitchBackends, AFarTranslatedTargetIsReproducedToItsCoordinatesUlps) {
+  const unsigned seed = testing::testSeed();
+  SCOPED_TRACE("seed " + std::to_string(seed));
+  std::mt19937 rng(seed);
+  const Eigen::RowVector3d offset = kFarOffset * Eigen::RowVector3d(1.0, -3.0, 2.0);
+  TetMesh rest = boxTetMesh(3, 4, 5, Eigen::Vector3d(1.0, 1.2, 2.0));
+  const Vertices target = testing::smoothWarp(rest.vertices, 0.1, rng).rowwise() + offset;
+  rest.vertices.rowwise() += offset;
+  StitchOptions options;
+  options.backend = GetParam();
+  const StitchSolver solver(rest, options);
+  const auto gradients = deformationGradients(rest, solver.restData(), target, 0);
+  const Vertices solved = solver.solve(gradients, solver.componentCentroids(target));
+  const double ulp =
+      std::nextafter(target.cwiseAbs().maxCoeff(), INFINITY) - target.cwiseAbs().maxCoeff();
+  EXPECT_LT(maxRowDistance(solved, target),
+            kFarUlps * ulp + kExactRelative * boundingBoxDiagonal(target));
 }
 
 TEST_P(StitchBackends, EveryComponentIsAnchoredAtItsCentroid) {
