@@ -70,6 +70,9 @@ std::string indexRange(const std::vector<std::string>& sources) {
                         "or an index " +
                         indexRange(sources) + ")";
   if (!modelPath.empty()) message += "; 'tetblend inspect " + modelPath + "' lists them all";
+  if (key.find('=') != std::string::npos) {
+    message += "; give each example its own --weight (--weight 1=0.5 --weight 3=0.25)";
+  }
   throw InputError(message);
 }
 

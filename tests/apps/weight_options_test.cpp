@@ -68,6 +68,10 @@ TEST_F(WeightOptions, BadEntriesAreOneLineAndWriteNothing) {
                 "--weight bar_bnd=0.5: no example is named 'bar_bnd'; examples: bar_twist4pi, "
                 "bar_bend (2 in all;");
   expectRefused({"--weight", "bar_bnd=0.5"}, "'tetblend inspect " + model_.string() + "'");
+  // Several entries in one --weight ("1=0.5,2=0.3") name no example.
+  expectRefused({"--weight", "1=0.5,2=0.3"},
+                "no example is named '1=0.5,2'; examples: bar_twist4pi, bar_bend (2 in all;");
+  expectRefused({"--weight", "1=0.5,2=0.3"}, "give each example its own --weight");
   expectRefused({"--weight", "3=0.5"},
                 "--weight 3=0.5: there is no example 3; the examples are numbered 1..2");
   expectRefused({"--weight", "0=0.5"}, "there is no example 0; the examples are numbered 1..2");
