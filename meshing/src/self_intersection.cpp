@@ -141,9 +141,7 @@ class SoupIntersector {
   }
 
   const Point& vertex(int v) const { return points_[static_cast<std::size_t>(v)]; }
-  const Point& point(int f, int corner) const {
-    return points_[static_cast<std::size_t>(triangles_(f, corner))];
-  }
+  const Point& point(int f, int corner) const { return vertex(triangles_(f, corner)); }
   Triangle triangle(int f) const { return Triangle(point(f, 0), point(f, 1), point(f, 2)); }
 
   const Triangles& triangles_;

@@ -11,7 +11,6 @@
 #include <array>
 #include <cstdint>
 #include <random>
-#include <set>
 #include <utility>
 #include <vector>
 
@@ -193,10 +192,8 @@ TEST(SelfIntersections, FlatAndTurnedGridsAreCleanUntilAVertexFoldsWithinThePlan
   constexpr int kCells = 6;
   const Eigen::Matrix3d turn =
       Eigen::AngleAxisd(0.7, Eigen::Vector3d(1.0, 2.0, 3.0).normalized()).toRotationMatrix();
-  EXPECT_EQ(findSelfIntersections(turnedGrid(kCells, turn).vertices,
-                                  turnedGrid(kCells, turn).triangles, 1)
-                .pairCount,
-            0u);
+  const SurfaceMesh turned = turnedGrid(kCells, turn);
+  EXPECT_EQ(findSelfIntersections(turned.vertices, turned.triangles, 1).pairCount, 0u);
   SurfaceMesh grid = turnedGrid(kCells, Eigen::Matrix3d::Identity());
   EXPECT_EQ(findSelfIntersections(grid.vertices, grid.triangles, 1).pairCount, 0u);
   const int center = 3 * (kCells + 1) + 3;
