@@ -23,6 +23,7 @@
 #include <tbb/collaborative_call_once.h>
 #include <tbb/parallel_for.h>
 
+#include "interior_ordering.h"
 #include "interior_stiffness.h"
 #include "tet_elements.h"
 #include "tetblend/core/batch_kernels.h"
@@ -51,15 +52,6 @@ constexpr int kGrain = 2048;
 // holds the zeros inside each supernode: xsize / lnz measured 1.39-1.98 on
 // TetGen meshes of 1.7k-166k tets (the larger on the smaller meshes).
 constexpr double kSupernodalPadding = 2.0;
-
-// From this many interior vertices on, the interior is ordered by METIS
-// alone. CHOLMOD's default orders with AMD and, when AMD's fill is high,
-// also with METIS, keeping the better: on bench_meshing's 1 M-tet bar
-// (145 914 interior vertices) it kept METIS, and METIS alone gives the same
-// factor (lnz 5.51e7, 6.27e10 flops) with analysis 2535 -> 1864 ms. At
-// 13 309 vertices (its 100 k row) CHOLMOD keeps AMD (26 ms) without trying
-// METIS, which would take 141 ms to save 30 % of the factorisation's flops.
-constexpr int kMetisOnlyInteriorVertices = 100000;
 
 // Flops of the interior's factorisation (CHOLMOD's count) from which it runs
 // on OpenBLAS's and OpenMP's thread teams. After their work the teams spin
@@ -164,6 +156,11 @@ struct CompatibleTetBuilder::Impl {
   Eigen::SimplicialLDLT<SparseMatrix> solver;
 #endif
   mutable std::mutex solveMutex;
+  // An elimination order handed to the constructor (may still be computing)
+  // and, once the factorisation used it, its permutation P (indices: interior
+  // vertex -> position), K_II being factored as P K_II Pᵀ.
+  std::shared_future<InteriorOrder> interiorOrder;
+  Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> permutation;
   // Collaborative: a thread that waits for the first use joins its parallel
   // loops (a std::call_once whose body runs TBB loops can deadlock when the
   // waiting thread stole the caller's outer task).
@@ -183,7 +180,19 @@ struct CompatibleTetBuilder::Impl {
       couplingBlock = std::move(blocks.coupling);
       if (interiorCount > 0) {
 #ifdef TETBLEND_HAVE_CHOLMOD
-        if (interiorCount >= kMetisOnlyInteriorVertices) {
+        const InteriorOrder order = interiorOrder.valid()
+                                        ? extendedInteriorOrder(interiorOrder.get(), interiorCount)
+                                        : InteriorOrder{};
+        if (!order.empty()) {
+          permutation.resize(interiorCount);
+          for (int k = 0; k < interiorCount; ++k) permutation.indices()[order[k]] = k;
+          SparseMatrix permuted;
+          permuted.selfadjointView<Eigen::Lower>() =
+              blocks.interiorLower.selfadjointView<Eigen::Lower>().twistedBy(permutation);
+          blocks.interiorLower = std::move(permuted);
+          solver.cholmod().nmethods = 1;
+          solver.cholmod().method[0].ordering = CHOLMOD_NATURAL;
+        } else if (interiorCount >= kMetisOnlyInteriorVertices) {
           solver.cholmod().nmethods = 1;
           solver.cholmod().method[0].ordering = CHOLMOD_METIS;
         }
@@ -307,7 +316,8 @@ struct CompatibleTetBuilder::Impl {
   Eigen::MatrixXd solveInterior(const Eigen::MatrixXd& rhs, const Eigen::MatrixXd& boundary) const {
     const Eigen::MatrixXd shifted = rhs - couplingBlock * boundary;
     const std::lock_guard<std::mutex> lock(solveMutex);
-    return solver.solve(shifted);
+    if (permutation.size() == 0) return solver.solve(shifted);
+    return permutation.transpose() * solver.solve(permutation * shifted);
   }
 
   // Σ_t vol_t R_t g_a over the tets, restricted to interior vertices a (the
@@ -474,7 +484,8 @@ struct CompatibleTetBuilder::Impl {
 };
 
 CompatibleTetBuilder::CompatibleTetBuilder(const TetMesh& rest, int surfaceVertexCount,
-                                           const CompatibleTetOptions& options)
+                                           const CompatibleTetOptions& options,
+                                           std::shared_future<std::vector<int>> interiorOrder)
     : impl_(std::make_unique<Impl>()) {
   Impl& m = *impl_;
   const int vertexCount = static_cast<int>(rest.vertices.rows());
@@ -487,6 +498,7 @@ CompatibleTetBuilder::CompatibleTetBuilder(const TetMesh& rest, int surfaceVerte
   m.surfaceCount = surfaceVertexCount;
   m.interiorCount = vertexCount - surfaceVertexCount;
   m.options = options;
+  m.interiorOrder = std::move(interiorOrder);
   m.elements = buildTetElements(rest);
   for (const TetElement& element : m.elements) m.totalVolume += element.volume;
   m.diagonal = boundingBoxDiagonal(rest.vertices);

@@ -15,6 +15,7 @@
 
 #include "half_edge_table.h"
 #include "hidden_parts.h"
+#include "interior_ordering.h"
 #include "inverted_tet_splits.h"
 #include "surface_interior.h"
 #include "tet_stellar_split.h"
@@ -384,6 +385,11 @@ CompatibleTetMeshes buildCompatibleTetMeshes(const TetMesh& rest, int surfaceVer
     const std::lock_guard<std::mutex> lock(progressMutex);
     progress(stage);
   };
+  // METIS orders the interior while the examples are checked and the mesh
+  // refined (interior_ordering.h): on bench_meshing's 1 M-tet bar it takes
+  // as long as the interior's factorisation.
+  const std::shared_future<InteriorOrder> interiorOrder = metisInteriorOrderInBackground(
+      rest.tets, surfaceVertexCount, static_cast<int>(rest.vertices.rows()));
   CompatibleTetMeshes meshes;
   meshes.rest = rest;
   const Triangles triangles = surfaceFirstBoundary(rest.tets, surfaceVertexCount);
@@ -445,7 +451,7 @@ CompatibleTetMeshes buildCompatibleTetMeshes(const TetMesh& rest, int surfaceVer
   // Stage 2: place every example, several at once (concurrentExamples).
   CompatibleTetOptions placement = options.placement;
   placement.untangle = false;
-  const CompatibleTetBuilder builder(meshes.rest, surfaceVertexCount, placement);
+  const CompatibleTetBuilder builder(meshes.rest, surfaceVertexCount, placement, interiorOrder);
   const std::size_t exampleCount = exampleSurfaces.size();
   meshes.examples.resize(exampleCount);
   forEachExample(
@@ -505,7 +511,7 @@ CompatibleTetMeshes buildCompatibleTetMeshes(const TetMesh& rest, int surfaceVer
       static_cast<Eigen::Index>(kMaxStage3Growth * static_cast<double>(meshes.rest.tets.rows()));
   for (std::size_t k : order) {
     if (measuredOn[k] != meshes.rest.tets.rows()) {
-      const CompatibleTetBuilder current(meshes.rest, surfaceVertexCount, placement);
+      const CompatibleTetBuilder current(meshes.rest, surfaceVertexCount, placement, interiorOrder);
       evaluateAgain(current, meshes.examples[k]);
       measuredOn[k] = meshes.rest.tets.rows();
       if (splitSinceUntangled(k)) {
@@ -525,7 +531,7 @@ CompatibleTetMeshes buildCompatibleTetMeshes(const TetMesh& rest, int surfaceVer
       if (sinceBest == 0) bestMeshes = meshes;
       if (!split(simplices, meshes, maxTets)) break;
       ++rounds;
-      const CompatibleTetBuilder refined(meshes.rest, surfaceVertexCount, placement);
+      const CompatibleTetBuilder refined(meshes.rest, surfaceVertexCount, placement, interiorOrder);
       untangleRefined(refined, surfaces[k], options.placement.untangleEffort, meshes.examples[k]);
       untangledCount[k] = meshes.examples[k].invertedTets.size();
       measuredOn[k] = meshes.rest.tets.rows();
@@ -556,7 +562,7 @@ CompatibleTetMeshes buildCompatibleTetMeshes(const TetMesh& rest, int surfaceVer
   }
   if (!pending.empty()) {
     const UntangleEffort thickened = thickenedEffort(options.placement.untangleEffort);
-    const CompatibleTetBuilder refined(meshes.rest, surfaceVertexCount, placement);
+    const CompatibleTetBuilder refined(meshes.rest, surfaceVertexCount, placement, interiorOrder);
     forEachExample(pending.size(), concurrentExamples(meshes.rest.tets.rows(), pending.size()),
                    [&](std::size_t i) {
                      const std::size_t k = pending[i];
@@ -574,7 +580,7 @@ CompatibleTetMeshes buildCompatibleTetMeshes(const TetMesh& rest, int surfaceVer
   // Each example's own surface back where a stand-in of a hidden part was
   // placed: the part's tets, of no volume, are measured inverted.
   if (std::find(standIn.begin(), standIn.end(), 1) != standIn.end()) {
-    const CompatibleTetBuilder last(meshes.rest, surfaceVertexCount, placement);
+    const CompatibleTetBuilder last(meshes.rest, surfaceVertexCount, placement, interiorOrder);
     for (std::size_t k = 0; k < exampleCount; ++k) {
       if (!standIn[k]) continue;
       meshes.examples[k].vertices.topRows(surfaceVertexCount) = exampleSurfaces[k];

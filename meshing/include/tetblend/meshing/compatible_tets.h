@@ -31,6 +31,7 @@
 //     by projected Newton steps.
 // The result reports exactly which tets remain inverted, if any.
 
+#include <future>
 #include <memory>
 #include <vector>
 
@@ -185,8 +186,15 @@ class CompatibleTetBuilder {
   /// range, #S is out of [1, #V], a vertex ≥ #S lies on a boundary face, or
   /// a face is shared by more than 2 tets. (place and harmonicExtension throw
   /// NumericalError if the factorisation fails.)
+  /// `interiorOrder`, when valid, is an elimination order of the interior
+  /// vertices of a mesh that `rest` extends (its vertices first, in the same
+  /// order, then new interior vertices; order[k] = the k-th eliminated, as
+  /// vertex − #S). The factorisation waits for it and eliminates the new
+  /// vertices last, when they are few; otherwise it orders the interior
+  /// itself. With CHOLMOD only.
   CompatibleTetBuilder(const TetMesh& rest, int surfaceVertexCount,
-                       const CompatibleTetOptions& options = {});
+                       const CompatibleTetOptions& options = {},
+                       std::shared_future<std::vector<int>> interiorOrder = {});
   ~CompatibleTetBuilder();
   CompatibleTetBuilder(CompatibleTetBuilder&&) noexcept;
   CompatibleTetBuilder& operator=(CompatibleTetBuilder&&) noexcept;
