@@ -1,5 +1,7 @@
 #include "interior_ordering.h"
 
+#include <malloc.h>
+
 #include <algorithm>
 #include <cstddef>
 #include <utility>
@@ -85,9 +87,17 @@ std::shared_future<InteriorOrder> metisInteriorOrderInBackground(const Tets& tet
                                                                  int surfaceVertexCount,
                                                                  int vertexCount) {
   if (!kHaveMetis || vertexCount - surfaceVertexCount < kMetisOnlyInteriorVertices) return {};
+  // The copy of the tets is freed as soon as the order is made, and so is
+  // what the thread's malloc arena keeps of its work space (glibc returns a
+  // thread arena's free pages only when trimmed): without both, bench_meshing's
+  // 1 M row peaked at 1090 MB instead of 1013 MB, with the trim alone at 1039.
   return std::async(std::launch::async,
-                    [tets, surfaceVertexCount, vertexCount] {
-                      return metisInteriorOrder(tets, surfaceVertexCount, vertexCount);
+                    [copy = tets, surfaceVertexCount, vertexCount]() mutable {
+                      InteriorOrder order =
+                          metisInteriorOrder(copy, surfaceVertexCount, vertexCount);
+                      copy = Tets();
+                      malloc_trim(0);
+                      return order;
                     })
       .share();
 }
