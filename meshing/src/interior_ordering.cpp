@@ -6,6 +6,8 @@
 #include <cstddef>
 #include <utility>
 
+#include <tbb/global_control.h>
+
 #ifdef TETBLEND_HAVE_CHOLMOD
 #include <cholmod.h>
 #endif
@@ -87,6 +89,10 @@ std::shared_future<InteriorOrder> metisInteriorOrderInBackground(const Tets& tet
                                                                  int surfaceVertexCount,
                                                                  int vertexCount) {
   if (!kHaveMetis || vertexCount - surfaceVertexCount < kMetisOnlyInteriorVertices) return {};
+  // A thread beside TBB's: not when the caller allowed one (--threads 1).
+  if (tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism) < 2) {
+    return {};
+  }
   // The copy of the tets is freed as soon as the order is made, and so is
   // what the thread's malloc arena keeps of its work space (glibc returns a
   // thread arena's free pages only when trimmed): without both, bench_meshing's

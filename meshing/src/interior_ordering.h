@@ -37,7 +37,8 @@ InteriorOrder metisInteriorOrder(const Tets& tets, int surfaceVertexCount, int v
 
 /// metisInteriorOrder on a thread of its own, started now; the tets are
 /// copied. An invalid future when the interior is below
-/// kMetisOnlyInteriorVertices or tetblend has no CHOLMOD.
+/// kMetisOnlyInteriorVertices, when TBB may use only one thread
+/// (tbb::global_control), or when tetblend has no CHOLMOD.
 std::shared_future<InteriorOrder> metisInteriorOrderInBackground(const Tets& tets,
                                                                  int surfaceVertexCount,
                                                                  int vertexCount);

@@ -1,7 +1,8 @@
 // The interior elimination order (meshing/src/interior_ordering.h): METIS's
 // order against the fill of the natural one (an elimination game played
-// here), the rule for appended vertices, and a builder factoring with an
-// order of the mesh it refines against one ordering for itself.
+// here), when the background order starts, the rule for appended vertices,
+// and a builder factoring with an order of the mesh it refines against one
+// ordering for itself.
 
 #include <gtest/gtest.h>
 
@@ -9,6 +10,8 @@
 #include <future>
 #include <set>
 #include <vector>
+
+#include <tbb/global_control.h>
 
 #include "interior_ordering.h"
 #include "tet_stellar_split.h"
@@ -89,6 +92,28 @@ TEST(InteriorOrdering, MetisOrdersEveryInteriorVertexOnceWithLessFillThanTheNatu
   // plane's vertices); nested dissection must do clearly better (here 0.56
   // of it; the gap widens with the box).
   EXPECT_LT(4 * metisFill, 3 * naturalFill) << "METIS " << metisFill << ", natural " << naturalFill;
+}
+
+// The background order starts only for interiors of kMetisOnlyInteriorVertices
+// or more and only when TBB may use a second thread (an interior without
+// tets: METIS orders its isolated vertices at once).
+TEST(InteriorOrdering, TheBackgroundOrderStartsForLargeInteriorsWhenASecondThreadIsAllowed) {
+  SKIP_WITHOUT_CHOLMOD();
+  const Tets none(0, 4);
+  EXPECT_FALSE(metisInteriorOrderInBackground(none, 1, kMetisOnlyInteriorVertices).valid());
+  {
+    const tbb::global_control one(tbb::global_control::max_allowed_parallelism, 1);
+    EXPECT_FALSE(metisInteriorOrderInBackground(none, 0, kMetisOnlyInteriorVertices).valid());
+  }
+  const tbb::global_control two(tbb::global_control::max_allowed_parallelism, 2);
+  const std::shared_future<InteriorOrder> order =
+      metisInteriorOrderInBackground(none, 0, kMetisOnlyInteriorVertices);
+  ASSERT_TRUE(order.valid());
+  std::vector<int> sorted = order.get();
+  std::sort(sorted.begin(), sorted.end());
+  ASSERT_EQ(static_cast<int>(sorted.size()), kMetisOnlyInteriorVertices);
+  for (int k = 0; k < kMetisOnlyInteriorVertices; ++k)
+    ASSERT_EQ(sorted[static_cast<std::size_t>(k)], k);
 }
 
 TEST(InteriorOrdering, AnOrderIsExtendedByAtMostOneVertexInAHundredAfterIt) {
