@@ -63,6 +63,18 @@ constexpr int kShiftAttempts = 6;
 // 2e7 to 3e8 flops, one core): the simplicial factorisation was faster up to
 // about 1e8 flops, even at 1e8, and twice as slow at 2.7e8.
 constexpr double kSupernodalFlops = 1.5e8;
+// A round keeps the last round's factor of the Newton matrix when that
+// round's first step agreed with the factor's quadratic model
+// (newtonModelAgrees): its actual decrease was within [kModelAgreement,
+// 2 - kModelAgreement] times the predicted one. For a quadratic energy of
+// Hessian H and a factor of c H the ratio is 2 - 1/c, so the factor is kept
+// while c lies in [5/9, 5]. ε shrinks by 5-10 % a round and the positions
+// move little, so the matrix of a few rounds back is often still a good
+// model. Measured 2026-12-03 over the README's five prepare sets: 269 ->
+// 162 s, no clean frame with excluded tets, 46 232 -> 46 375 excluded;
+// with 0.5, 171 s and 46 778; keeping it after any full step (0), 175 s
+// and one clean frame with excluded tets.
+constexpr double kModelAgreement = 0.2;
 // Refocusing (FreeRegionAround): once the inverted tets number at most
 // 1 / kRefocusFall of those at the last focus, the free region is narrowed
 // to the caller's rings around them if that frees at most 1 / kRefocusShrink
@@ -424,13 +436,17 @@ bool factorNewtonMatrix(UntangleEnergy& energy, double epsilon, NewtonSolver& so
 struct EnergyChange {
   double before;
   double after;
+  // The first step was taken at full length and decreased the energy as
+  // the factored matrix's quadratic model predicted (newtonModelAgrees).
+  bool modelAgreed = false;
 };
 
 // Projected Newton with Armijo backtracking (Nocedal & Wright Alg. 3.1 with
 // the Hessian made positive definite per element): at most maxIterations
 // steps, until the gradient falls below kRelativeGradientTolerance of its
-// start. The Newton matrix is assembled and factored at the first step
-// only; later steps solve with that factor (the chord method: a positive
+// start. With `refactor` the Newton matrix is assembled and factored at the
+// first step, else the solver's factor of an earlier round is used
+// (kModelAgreement); later steps solve with that factor (the chord method: a positive
 // definite matrix still gives a descent direction, and the line search
 // keeps the decrease). Measured 2026-12-03 over the README's five prepare
 // sets (clean examples take 2 steps a round): 316 -> 253 s, the one clean
@@ -438,14 +454,15 @@ struct EnergyChange {
 // more excluded tets (45 916 -> 46 232, in 3 of 48 models); a single step a
 // round instead took 269 s and excluded 5 % more.
 EnergyChange minimiseNewton(UntangleEnergy& energy, double epsilon, int maxIterations,
-                            NewtonSolver& solver, Eigen::VectorXd& x) {
+                            NewtonSolver& solver, Eigen::VectorXd& x, bool refactor) {
+  bool modelAgreed = false;
   Eigen::VectorXd gradient;
   double value = energy.evaluate(x, epsilon, &gradient);
   const double before = value;
   const double startNorm = gradient.norm();
   for (int iteration = 0; iteration < maxIterations; ++iteration) {
     if (gradient.norm() <= kRelativeGradientTolerance * startNorm) break;
-    if (iteration == 0 && !factorNewtonMatrix(energy, epsilon, solver)) break;
+    if (iteration == 0 && refactor && !factorNewtonMatrix(energy, epsilon, solver)) break;
     const Eigen::VectorXd direction = -solver.solve(gradient);
     const double slope = gradient.dot(direction);
     if (!(slope < 0.0)) break;
@@ -463,15 +480,22 @@ EnergyChange minimiseNewton(UntangleEnergy& energy, double epsilon, int maxItera
       }
     }
     if (!accepted) break;
+    if (iteration == 0) modelAgreed = step == 1.0 && newtonModelAgrees(slope, value, trialValue);
     x = trial;
     gradient = trialGradient;
     value = trialValue;
   }
   energy.setFreeVariables(x);
-  return {before, value};
+  return {before, value, modelAgreed};
 }
 
 }  // namespace
+
+bool newtonModelAgrees(double slope, double before, double after) {
+  const double predicted = -0.5 * slope;
+  const double actual = before - after;
+  return actual >= kModelAgreement * predicted && actual <= (2.0 - kModelAgreement) * predicted;
+}
 
 UntangleOutcome untangle(const Tets& tets, const std::vector<TetElement>& elements,
                          const std::vector<int>& freeVertices, const UntangleEffort& effort,
@@ -496,6 +520,7 @@ UntangleOutcome untangle(const Tets& tets, const std::vector<TetElement>& elemen
   // excluded tets.
   std::pair<int, double> bestState(inverted, -minDet);
   Vertices best = positions;
+  bool refactor = true;  // the first round factors the Newton matrix; see kModelAgreement
   int risingRounds = 0;  // rounds in a row ending with more inverted tets than the last
   int lastInverted = inverted;
   int notBelowStart = 0;  // rounds in a row ending with no fewer inverted tets than the start
@@ -504,7 +529,8 @@ UntangleOutcome untangle(const Tets& tets, const std::vector<TetElement>& elemen
          (effort.roundsToFallBelowStart == 0 || notBelowStart < effort.roundsToFallBelowStart) &&
          (effort.risingRoundsToGiveUp == 0 || risingRounds < effort.risingRoundsToGiveUp)) {
     const EnergyChange change =
-        minimiseNewton(*energy, epsilon, effort.iterationsPerRound, *solver, x);
+        minimiseNewton(*energy, epsilon, effort.iterationsPerRound, *solver, x, refactor);
+    refactor = !change.modelAgreed;
     ++outcome.rounds;
     std::tie(minDet, inverted) = energy->determinants();
     if (minDet > bestMinDet + effort.minDetProgress * std::abs(bestMinDet) ||
@@ -533,6 +559,7 @@ UntangleOutcome untangle(const Tets& tets, const std::vector<TetElement>& elemen
         energy = std::make_unique<UntangleEnergy>(tets, elements, std::move(region),
                                                   energy->positions());
         solver = std::make_unique<NewtonSolver>();
+        refactor = true;
         x = energy->freeVariables();
       }
       focusInverted = inverted;

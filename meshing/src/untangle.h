@@ -7,8 +7,9 @@
 // stand-in for J, while the regularisation ε decreases to 0 (the paper's
 // Alg. 1). Each ε is minimised by projected Newton steps (every tet's
 // Hessian made positive semi-definite from its closed-form eigensystem,
-// untangle_tet_energy.h; one sparse Cholesky factorisation per step, the
-// pattern analysed once) instead of the paper's L-BFGS: on the hard-pose
+// untangle_tet_energy.h; one sparse Cholesky factorisation per round at
+// most, kept while it predicts the decrease, the pattern analysed once)
+// instead of the paper's L-BFGS: on the hard-pose
 // corpus L-BFGS with 30 iterations per ε left 6 of 48 clean poses with 492
 // inverted tets (44 s), and knot1's 1080° twist alone kept 4 tets after 14
 // minutes with 300 iterations per ε; Newton with 2 steps per ε, with the
@@ -32,6 +33,13 @@ struct UntangleOutcome {
 /// around them): untangle narrows its free region to these once most of
 /// its inverted tets are repaired (untangle.cpp, kRefocusFall).
 using FreeRegionAround = std::function<std::vector<int>(const std::vector<int>& invertedTets)>;
+
+/// Whether a full-length Newton step d = -B⁻¹g of slope gᵀd < 0 that took
+/// the energy from `before` to `after` agreed with the quadratic model of
+/// the factored matrix B, whose predicted decrease is -gᵀd / 2: the actual
+/// decrease lies within [kModelAgreement, 2 - kModelAgreement] times it
+/// (untangle.cpp). Then the next round keeps B's factor.
+bool newtonModelAgrees(double slope, double before, double after);
 
 /// Moves the vertices listed in `freeVertices` (distinct indices into
 /// `positions`, #V by 3) to remove inverted tets among the tets touching

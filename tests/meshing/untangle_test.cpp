@@ -9,12 +9,14 @@
 #include <array>
 #include <cmath>
 #include <iostream>
+#include <random>
 #include <set>
 #include <utility>
 #include <vector>
 
 #include <Eigen/LU>
 
+#include "test_seed.h"
 #include "tet_elements.h"
 #include "tetblend/core/tet_geometry.h"
 #include "tetblend/meshing/compatible_tets.h"
@@ -244,10 +246,11 @@ TEST(Untangle, AnAttemptThatNeverFallsBelowItsStartGivesUpAfterItsRounds) {
 }
 
 // UntangleEffort::risingRoundsToGiveUp on the hopeless fold. From 54
-// inverted tets its rounds end with 106, 76, 98, 156, 216, ... (a scratch
-// trace): with the limit at 3, rounds 3 to 5 rise in a row and the attempt
-// stops after round 5, returning its best state, the start (no round fell
-// below it); without the limit it runs its 8 rounds.
+// inverted tets its rounds end with 106, 182, 148, 164, 148, 200, ... (a
+// scratch trace, with the factor kept across rounds by kModelAgreement):
+// with the limit at 2, rounds 1 and 2 rise in a row and the attempt stops
+// after round 2, returning its best state, the start (no round fell below
+// it); without the limit it runs its 8 rounds.
 TEST(Untangle, AnAttemptWhoseCountKeepsRisingGivesUp) {
   const TetMesh mesh = kuhnGrid();
   const std::vector<TetElement> elements = buildTetElements(mesh);
@@ -258,11 +261,11 @@ TEST(Untangle, AnAttemptWhoseCountKeepsRisingGivesUp) {
       untangle(mesh.tets, elements, interiorVertices(mesh), brief, positions);
   EXPECT_EQ(unlimited.rounds, 8);
 
-  brief.risingRoundsToGiveUp = 3;
+  brief.risingRoundsToGiveUp = 2;
   positions = start;
   const UntangleOutcome limited =
       untangle(mesh.tets, elements, interiorVertices(mesh), brief, positions);
-  EXPECT_EQ(limited.rounds, 5);
+  EXPECT_EQ(limited.rounds, 2);
   EXPECT_TRUE(positions == start);
 }
 
@@ -292,6 +295,34 @@ TEST(Untangle, TheFirstEpsilonIsCappedByLargestStartEpsilon) {
   ASSERT_FALSE(uncapped == start) << "one step left the fold unchanged";
   EXPECT_TRUE(oneStep(2.0 * std::abs(minDet)) == uncapped);
   EXPECT_FALSE(oneStep(0.1) == uncapped);
+}
+
+// newtonModelAgrees on a quadratic energy f(x) = ½ xᵀHx (random H and x) with a stale factor B =
+// cH: the step d = -B⁻¹g decreases f by (2 - 1/c) times the model's prediction -gᵀd / 2 (an
+// identity of the quadratic, independent of the code), so the factor is kept exactly for c in [5/9,
+// 5] (kModelAgreement = 0.2), here checked just inside and just outside both ends, at 1 and where
+// the full step no longer decreases f.
+TEST(Untangle, AStaleFactorIsKeptWhileItsModelPredictsTheDecrease) {
+  std::mt19937 random(test_seed::seedOfCurrentTest(20261203u));
+  std::normal_distribution<double> normal;
+  Eigen::MatrixXd a(6, 6);
+  for (Eigen::Index i = 0; i < a.size(); ++i) a.data()[i] = normal(random);
+  const Eigen::MatrixXd h = a * a.transpose() + Eigen::MatrixXd::Identity(6, 6);
+  Eigen::VectorXd x(6);
+  for (Eigen::Index i = 0; i < x.size(); ++i) x[i] = normal(random);
+  const auto f = [&](const Eigen::VectorXd& y) { return 0.5 * y.dot(h * y); };
+  const Eigen::VectorXd g = h * x;
+  // A margin of 1e-6 in c moves the ratio 2 - 1/c by at least 4e-8, far
+  // above the rounding of f's decrease (about 1e-15 of f here).
+  constexpr double kMargin = 1e-6;
+  const std::vector<std::pair<double, bool>> cases = {
+      {0.5, false}, {5.0 / 9.0 - kMargin, false}, {5.0 / 9.0 + kMargin, true},
+      {1.0, true},  {5.0 - kMargin, true},        {5.0 + kMargin, false},
+  };
+  for (const auto& [c, kept] : cases) {
+    const Eigen::VectorXd d = -(c * h).ldlt().solve(g);
+    EXPECT_EQ(newtonModelAgrees(g.dot(d), f(x), f(x + d)), kept) << "c = " << c;
+  }
 }
 
 }  // namespace
