@@ -21,6 +21,7 @@
 
 #include "tetblend/core/openmp_teams.h"
 #include "untangle_tet_energy.h"
+#include "vertex_block_ordering.h"
 
 namespace tetblend {
 namespace {
@@ -348,10 +349,12 @@ class UntangleEnergy {
   double totalVolume_ = 0.0;
 };
 
-// Eigen's simplicial LLᵀ with the cost of its numeric factorisation,
+// Eigen's simplicial LLᵀ, ordered on the free vertices' graph
+// (vertex_block_ordering.h), with the cost of its numeric factorisation,
 // Σ_j |L_*j|² flops over the columns of L (George & Liu 1981), from the
 // column counts of its symbolic analysis.
-class SimplicialSolver : public Eigen::SimplicialLLT<SparseMatrix, Eigen::Lower> {
+class SimplicialSolver
+    : public Eigen::SimplicialLLT<SparseMatrix, Eigen::Lower, VertexBlockAmdOrdering> {
  public:
   double factorisationFlops() const {
     const int* start = m_matrix.outerIndexPtr();
