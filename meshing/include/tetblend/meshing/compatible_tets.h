@@ -47,7 +47,8 @@ struct UntangleEffort {
   /// example surface that intersects itself) fail fast.
   int maxRings = 0;
   /// Maximum projected Newton steps per untangling round (the first factors
-  /// the Newton matrix, the others reuse that factor). A round only
+  /// the Newton matrix unless the round keeps the last round's factor,
+  /// untangle.cpp's kModelAgreement; the others reuse that factor). A round only
   /// follows the minimiser as ε shrinks by 5-10 %: on the hard-pose corpus
   /// (before untangle.cpp's stall and start rules) 2 steps left 3 clean
   /// poses with 9 inverted tets in 76 s, 5 steps 4 with 72 in 88 s.
