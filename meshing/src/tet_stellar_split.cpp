@@ -186,7 +186,7 @@ TetMesh splitSimplices(const TetMesh& mesh, const std::vector<Simplex>& simplice
         }
         for (int c = 0; c < 4; ++c) {
           const auto v = static_cast<size_t>(child(c));
-          if (tracked[v] && (index != t || child(c) == p)) stars[v].push_back(index);
+          if (tracked[v] && index != t) stars[v].push_back(index);  // p is not tracked
         }
         // The parent's vertex s left this child: drop the child from s's star.
         if (index == t) {
