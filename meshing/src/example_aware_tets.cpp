@@ -9,6 +9,8 @@
 #include <numeric>
 #include <utility>
 
+#include <tbb/blocked_range.h>
+#include <tbb/collaborative_call_once.h>
 #include <tbb/parallel_for.h>
 
 #include "example_concurrency.h"
@@ -170,78 +172,83 @@ std::vector<int> faceComponents(const Triangles& triangles,
   return group;
 }
 
-// The solids an example's surface bounds, one per tet component, each made
-// when first asked for.
+// The solids an example's surface bounds, one per tet component that has a
+// rigid simplex, all made up front so that the tests can share them
+// across threads.
 class ComponentInteriors {
  public:
   ComponentInteriors(const Vertices& example, const Triangles& triangles,
-                     const std::vector<int>& faceComponent)
-      : example_(example), triangles_(triangles), faceComponent_(faceComponent) {}
-
-  const SurfaceInterior& of(int component) {
-    auto& interior = interiors_[component];
-    if (!interior) {
+                     const std::vector<int>& faceComponent, const std::vector<int>& components) {
+    for (int component : components) {
       std::vector<Eigen::Index> rows;
-      for (std::size_t f = 0; f < faceComponent_.size(); ++f) {
-        if (faceComponent_[f] == component) rows.push_back(static_cast<Eigen::Index>(f));
+      for (std::size_t f = 0; f < faceComponent.size(); ++f) {
+        if (faceComponent[f] == component) rows.push_back(static_cast<Eigen::Index>(f));
       }
-      interior = std::make_unique<SurfaceInterior>(example_, triangles_(rows, Eigen::all));
+      interiors_[component] =
+          std::make_unique<SurfaceInterior>(example, triangles(rows, Eigen::all));
     }
-    return *interior;
   }
 
+  const SurfaceInterior& of(int component) const { return *interiors_.at(component); }
+
  private:
-  const Vertices& example_;
-  const Triangles& triangles_;
-  const std::vector<int>& faceComponent_;
   std::map<int, std::unique_ptr<SurfaceInterior>> interiors_;
 };
 
-// The rigid simplices of `mesh` (rigidSimplices) that leave the solid of an
-// embeddable example (one whose surface neither intersects itself nor
-// collapses faces), the solid of
-// their own tet component, as what to split: such an edge itself; such a
-// face through one of its rigid edges if it has one (the split frees the
-// face too), else the face. Sorted, edges first, so splitSimplices never
-// meets a face whose edge it already split.
-std::vector<Simplex> rigidSimplicesOutside(const TetMesh& mesh, int surfaceCount,
-                                           const BoundarySimplices& boundary,
-                                           const std::vector<Vertices>& examples,
-                                           const Triangles& triangles,
+// Rigid simplices tested per TBB task: each test is a few microseconds (a
+// box query and a ray shot), 484 of them per example at bench_meshing's
+// 10 k row.
+constexpr std::size_t kRigidGrain = 32;
+
+// The simplices of `rigid` (rigidSimplices of the rest mesh, sorted) that
+// leave the solid an embeddable example (one whose surface neither
+// intersects itself nor collapses faces) bounds for their own tet
+// component, as what to split: such an edge itself; such a face through
+// one of its rigid edges if it has one (the split frees the face too),
+// else the face. Sorted, edges first, so splitSimplices never meets a face
+// whose edge it already split.
+std::vector<Simplex> rigidSimplicesOutside(const std::vector<Simplex>& rigid,
+                                           const Vertices& example, const Triangles& triangles,
                                            const std::vector<int>& vertexComponent,
-                                           const std::vector<char>& embeddable) {
-  const std::vector<Simplex> rigid = rigidSimplices(mesh, surfaceCount, boundary);
-  if (rigid.empty()) return {};
-  const std::vector<int> faceComponent = faceComponents(triangles, vertexComponent);
-  std::vector<std::vector<Simplex>> perExample(examples.size());
-  tbb::parallel_for(std::size_t{0}, examples.size(), [&](std::size_t k) {
-    if (!embeddable[k]) return;
-    ComponentInteriors interiors(examples[k], triangles, faceComponent);
-    for (const Simplex& simplex : rigid) {
-      const auto& v = simplex.vertices;
-      const SurfaceInterior& interior =
-          interiors.of(vertexComponent[static_cast<std::size_t>(v[0])]);
-      if (simplex.count == 2) {
-        if (!interior.segmentInside(v[0], v[1])) perExample[k].push_back(simplex);
-        continue;
-      }
-      if (interior.triangleInside(v[0], v[1], v[2])) continue;
-      Simplex through = simplex;
-      for (const auto& [a, b] : {std::pair{v[0], v[1]}, {v[1], v[2]}, {v[0], v[2]}}) {
-        Simplex edge;
-        edge.vertices = {a, b, 0};
-        edge.count = 2;
-        if (std::binary_search(rigid.begin(), rigid.end(), edge)) through = edge;
-      }
-      perExample[k].push_back(through);
-    }
-  });
-  std::vector<Simplex> result;
-  for (const std::vector<Simplex>& list : perExample) {
-    result.insert(result.end(), list.begin(), list.end());
+                                           const std::vector<int>& faceComponent) {
+  std::vector<int> components;
+  for (const Simplex& simplex : rigid) {
+    components.push_back(vertexComponent[static_cast<std::size_t>(simplex.vertices[0])]);
   }
-  std::sort(result.begin(), result.end());
-  result.erase(std::unique(result.begin(), result.end()), result.end());
+  sortUnique(components);
+  const ComponentInteriors interiors(example, triangles, faceComponent, components);
+  std::vector<Simplex> split(rigid.size());
+  std::vector<char> outside(rigid.size(), 0);
+  tbb::parallel_for(
+      tbb::blocked_range<std::size_t>(0, rigid.size(), kRigidGrain),
+      [&](const tbb::blocked_range<std::size_t>& range) {
+        for (std::size_t i = range.begin(); i != range.end(); ++i) {
+          const Simplex& simplex = rigid[i];
+          const auto& v = simplex.vertices;
+          const SurfaceInterior& interior =
+              interiors.of(vertexComponent[static_cast<std::size_t>(v[0])]);
+          if (simplex.count == 2) {
+            outside[i] = !interior.segmentInside(v[0], v[1]);
+            split[i] = simplex;
+            continue;
+          }
+          if (interior.triangleInside(v[0], v[1], v[2])) continue;
+          Simplex through = simplex;
+          for (const auto& [a, b] : {std::pair{v[0], v[1]}, {v[1], v[2]}, {v[0], v[2]}}) {
+            Simplex edge;
+            edge.vertices = {a, b, 0};
+            edge.count = 2;
+            if (std::binary_search(rigid.begin(), rigid.end(), edge)) through = edge;
+          }
+          outside[i] = 1;
+          split[i] = through;
+        }
+      });
+  std::vector<Simplex> result;
+  for (std::size_t i = 0; i < rigid.size(); ++i) {
+    if (outside[i]) result.push_back(split[i]);
+  }
+  sortUnique(result);
   return result;
 }
 
@@ -364,6 +371,15 @@ CompatibleTetMeshes buildCompatibleTetMeshes(const TetMesh& rest, int surfaceVer
   // refined up to the growth bound).
   std::vector<char> embeddable(exampleSurfaces.size());
   std::vector<char> standIn(exampleSurfaces.size(), 0);  // surfaces[k] differs from the example's
+  // Stage 1 begins in the same tasks: the rigid edges and faces (made by
+  // the first task that needs them) that leave an embeddable example's
+  // solid. One task per example, so that an example's rigid tests need not
+  // wait for the other examples' checks: bench_meshing's 10 k row checked
+  // three examples on two threads in 8-9 ms, then tested two examples' rigid
+  // simplices in 5-6 ms.
+  tbb::collaborative_once_flag rigidOnce;
+  std::vector<Simplex> rigid;
+  std::vector<std::vector<Simplex>> outsideOf(exampleSurfaces.size());
   tbb::parallel_for(std::size_t{0}, exampleSurfaces.size(), [&](std::size_t k) {
     meshes.selfIntersections[k] =
         findSelfIntersections(exampleSurfaces[k], triangles, 1, faceComponent);
@@ -377,16 +393,22 @@ CompatibleTetMeshes buildCompatibleTetMeshes(const TetMesh& rest, int surfaceVer
     embeddable[k] =
         meshes.selfIntersections[k].pairCount == 0 &&
         (collapsed.empty() || collapsedFaces(restSurface, surfaces[k], triangles).empty());
+    if (!embeddable[k] || options.maxRounds <= 0) return;
+    tbb::collaborative_call_once(
+        rigidOnce, [&] { rigid = rigidSimplices(meshes.rest, surfaceVertexCount, boundary); });
+    outsideOf[k] =
+        rigidSimplicesOutside(rigid, surfaces[k], triangles, vertexComponent, faceComponent);
   });
-
-  // Stage 1: rigid edges and faces that leave an embeddable example's solid, then
-  // all-surface tets an example inverts (no placement can help either).
-  const std::vector<Simplex> outside = rigidSimplicesOutside(
-      meshes.rest, surfaceVertexCount, boundary, surfaces, triangles, vertexComponent, embeddable);
-  if (!outside.empty() && options.maxRounds > 0) {
+  std::vector<Simplex> outside;
+  for (const std::vector<Simplex>& list : outsideOf) {
+    outside.insert(outside.end(), list.begin(), list.end());
+  }
+  sortUnique(outside);
+  if (!outside.empty()) {
     meshes.rigidSimplicesOutside = static_cast<int>(outside.size());
     if (split(outside, meshes)) report("refine");
   }
+  // Then all-surface tets an example inverts (no placement can help either).
   for (int round = 0; round < options.maxRounds; ++round) {
     std::vector<int> bad;
     for (const Vertices& example : surfaces) {
