@@ -6,7 +6,6 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <iostream>
 #include <random>
@@ -16,6 +15,7 @@
 
 #include <Eigen/LU>
 
+#include "kuhn_grid.h"
 #include "test_seed.h"
 #include "tet_elements.h"
 #include "tetblend/core/tet_geometry.h"
@@ -26,57 +26,11 @@ namespace tetblend {
 namespace {
 
 constexpr int kCells = 8;  // cells per side
-constexpr int kSide = kCells + 1;
+const KuhnGrid kGrid{kCells};
 
-int vertexIndex(int i, int j, int k) { return (i * kSide + j) * kSide + k; }
-
-bool onBoundary(int v) {
-  const int i = v / (kSide * kSide), j = (v / kSide) % kSide, k = v % kSide;
-  return i == 0 || j == 0 || k == 0 || i == kCells || j == kCells || k == kCells;
-}
-
-// The unit cube split into kCells³ cells of 6 tets each (Kuhn's split along
-// the cell diagonal), every tet positively oriented.
-TetMesh kuhnGrid() {
-  TetMesh mesh;
-  mesh.vertices.resize(kSide * kSide * kSide, 3);
-  for (int i = 0; i < kSide; ++i) {
-    for (int j = 0; j < kSide; ++j) {
-      for (int k = 0; k < kSide; ++k) {
-        mesh.vertices.row(vertexIndex(i, j, k)) << i, j, k;
-      }
-    }
-  }
-  mesh.vertices /= kCells;
-  const std::array<std::array<int, 3>, 6> orders = {
-      {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}}};
-  std::vector<std::array<int, 4>> tets;
-  for (int i = 0; i < kCells; ++i) {
-    for (int j = 0; j < kCells; ++j) {
-      for (int k = 0; k < kCells; ++k) {
-        for (const auto& order : orders) {
-          std::array<int, 3> corner = {i, j, k};
-          std::array<int, 4> tet{};
-          tet[0] = vertexIndex(corner[0], corner[1], corner[2]);
-          for (int step = 0; step < 3; ++step) {
-            ++corner[static_cast<std::size_t>(order[static_cast<std::size_t>(step)])];
-            tet[static_cast<std::size_t>(step) + 1] = vertexIndex(corner[0], corner[1], corner[2]);
-          }
-          tets.push_back(tet);
-        }
-      }
-    }
-  }
-  mesh.tets.resize(static_cast<Eigen::Index>(tets.size()), 4);
-  for (std::size_t t = 0; t < tets.size(); ++t) {
-    const auto row = static_cast<Eigen::Index>(t);
-    for (int a = 0; a < 4; ++a) mesh.tets(row, a) = tets[t][static_cast<std::size_t>(a)];
-    if (tetSignedVolume(mesh.vertices, mesh.tets.row(row)) < 0.0) {
-      std::swap(mesh.tets(row, 2), mesh.tets(row, 3));
-    }
-  }
-  return mesh;
-}
+int vertexIndex(int i, int j, int k) { return kGrid.index(i, j, k); }
+bool onBoundary(int v) { return kGrid.onBoundary(v); }
+TetMesh kuhnGrid() { return kGrid.mesh(); }
 
 // The interior vertices of `tets` and of the tets sharing a vertex with them.
 std::vector<int> interiorAround(const TetMesh& mesh, const std::vector<int>& tets) {
