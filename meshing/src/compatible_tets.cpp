@@ -25,13 +25,12 @@
 
 #include "interior_ordering.h"
 #include "interior_stiffness.h"
+#include "local_arap.h"
 #include "tet_elements.h"
-#include "tetblend/core/batch_kernels.h"
 #include "tetblend/core/blas_threads.h"
 #include "tetblend/core/error.h"
 #include "tetblend/core/memory_preflight.h"
 #include "tetblend/core/openmp_teams.h"
-#include "tetblend/core/polar.h"
 #include "tetblend/core/sym3.h"
 #include "tetblend/core/tet_geometry.h"
 #include "tetblend/meshing/tet_boundary.h"
@@ -62,6 +61,12 @@ constexpr double kSupernodalPadding = 2.0;
 // 527-546 ms without teams, 607-832 ms with them (and with OpenBLAS's pool
 // restarted after TetGen's fork).
 constexpr double kTeamFactorisationFlops = 1e10;
+
+// A local ARAP search (CompatibleTetBuilder::place's arapRings) runs only
+// when its region holds at most this share of the interior vertices: a
+// larger one costs about as much as the global search, whose factor is
+// already made, and leaves most of the interior where the harmonic map put it.
+constexpr double kLocalArapShare = 0.5;
 
 // UntangleEffort::thickenedReference thickens rest tets whose edge matrix
 // has a singular value below this fraction of its largest
@@ -95,45 +100,6 @@ double arapResidual(const Eigen::Matrix3d& f, double det) {
   Eigen::Vector3d sigma = eigenvalues.cwiseMax(0.0).cwiseSqrt();
   if (det < 0.0) sigma.z() = -sigma.z();
   return (sigma - Eigen::Vector3d::Ones()).squaredNorm();
-}
-
-// The rotation closest to F: for det F > 0 the polar factor by core's
-// Newton iteration (~3× cheaper than an SVD), else, or if it does not
-// converge, closestRotation's SVD (reflection removed).
-Eigen::Matrix3d fastClosestRotation(const Eigen::Matrix3d& f) {
-  if (f.allFinite() && f.determinant() > 0.0) {
-    try {
-      return polarDecompose(f).rotation;
-    } catch (const NumericalError&) {
-      // falls through to the SVD, defined for every f
-    }
-  }
-  return closestRotation(f);
-}
-
-// out[i] = the rotation closest to f[i] (as fastClosestRotation), i < n: the
-// elements with det F > 0 through core's batched polar rotation (the closed
-// form, vectorised: 22 M/s against the Newton iteration's 2.6 M/s in
-// bench_core's polar_rotation rows), the others, and a batch whose Newton
-// fallback fails, one by one.
-void closestRotations(const Eigen::Matrix3d* f, Eigen::Matrix3d* out, std::size_t n) {
-  std::vector<std::size_t> positive;
-  std::vector<Eigen::Matrix3d> in;
-  for (std::size_t i = 0; i < n; ++i) {
-    if (f[i].allFinite() && f[i].determinant() > 0.0) {
-      positive.push_back(i);
-      in.push_back(f[i]);
-    } else {
-      out[i] = closestRotation(f[i]);
-    }
-  }
-  std::vector<Eigen::Matrix3d> rotations(in.size());
-  try {
-    polarRotationBatch(in.data(), rotations.data(), in.size());
-  } catch (const NumericalError&) {
-    for (std::size_t k = 0; k < in.size(); ++k) rotations[k] = fastClosestRotation(in[k]);
-  }
-  for (std::size_t k = 0; k < positive.size(); ++k) out[positive[k]] = rotations[k];
 }
 
 }  // namespace
@@ -475,6 +441,24 @@ struct CompatibleTetBuilder::Impl {
     result.vertices = std::move(best);
   }
 
+  // Step 2 with arapRings > 0 (examples whose surface intersects itself):
+  // ARAP over the interior vertices within `rings` tet-rings of the
+  // harmonic map's inverted tets, every other vertex kept (local_arap.h),
+  // when they are at most kLocalArapShare of the interior; false, changing
+  // nothing, otherwise.
+  bool localArapSearch(int iterations, int rings, CompatibleTetResult& result) const {
+    if (rings <= 0) return false;
+    const std::vector<int> region = interiorRegion(result.invertedTets, rings);
+    if (static_cast<double>(region.size()) > kLocalArapShare * interiorCount) return false;
+    LocalArapStops stops;
+    stops.maxIterations = iterations;
+    stops.tolerance = options.arapRelativeTolerance * diagonal;
+    stops.stallFall = options.arapStallFall;
+    stops.stopWhenValid = options.stopWhenValid;
+    result.arapIterations += localArap(rest.tets, elements, stars, region, stops, result.vertices);
+    return true;
+  }
+
   Vertices assemble(const Vertices& example, const Eigen::MatrixXd& interior) const {
     Vertices positions(surfaceCount + interiorCount, 3);
     positions.topRows(surfaceCount) = example;
@@ -527,8 +511,8 @@ CompatibleTetResult CompatibleTetBuilder::place(const Vertices& exampleSurface) 
   return place(exampleSurface, impl_->options.arapIterations);
 }
 
-CompatibleTetResult CompatibleTetBuilder::place(const Vertices& exampleSurface,
-                                                int arapIterations) const {
+CompatibleTetResult CompatibleTetBuilder::place(const Vertices& exampleSurface, int arapIterations,
+                                                int arapRings) const {
   Impl& m = *impl_;
   CompatibleTetResult result;
   result.vertices = harmonicExtension(exampleSurface);
@@ -536,7 +520,9 @@ CompatibleTetResult CompatibleTetBuilder::place(const Vertices& exampleSurface,
   result.harmonicInvertedCount = static_cast<int>(result.invertedTets.size());
   const bool harmonicAccepted = m.options.stopWhenValid && result.invertedTets.empty();
   if (m.interiorCount > 0 && !harmonicAccepted) {
-    m.arapSearch(exampleSurface, arapIterations, result);
+    if (!m.localArapSearch(arapIterations, arapRings, result)) {
+      m.arapSearch(exampleSurface, arapIterations, result);
+    }
     if (m.options.untangle) {
       result.untangleRounds = m.untangleInverted(result.vertices, m.options.untangleEffort);
     }

@@ -443,8 +443,9 @@ CompatibleTetMeshes buildCompatibleTetMeshes(const TetMesh& rest, int surfaceVer
       exampleCount, concurrentExamples(meshes.rest.tets.rows(), exampleCount), [&](std::size_t i) {
         const std::size_t k = placingOrder[i];
         CompatibleTetResult placed =
-            builder.place(surfaces[k], embeddable[k] ? options.placement.arapIterations
-                                                     : options.intersectingArapIterations);
+            embeddable[k] ? builder.place(surfaces[k], options.placement.arapIterations)
+                          : builder.place(surfaces[k], options.intersectingArapIterations,
+                                          options.intersectingArapRings);
         if (options.placement.untangle && !placed.invertedTets.empty()) {
           untangleAgain(builder, effortFor(embeddable[k], options), placed);
         }

@@ -282,6 +282,64 @@ TEST(CompatibleTets, InvertedHarmonicExtensionStillRunsArap) {
   expectDistortionReported(c, converged);
 }
 
+// place(surface, iterations, rings): ARAP over the interior vertices within
+// `rings` tet-rings of the harmonic map's inverted tets only, every other
+// vertex left at the harmonic map bit for bit; a region of more than half
+// the interior gives the whole interior's search, bit for bit.
+TEST(CompatibleTets, LocalArapMovesOnlyTheRingAroundTheHarmonicMapsInvertedTets) {
+  // A box whose top face is dented at its centre vertex, 0.6 of its height
+  // deep: the harmonic map leaves that vertex's neighbours above it.
+  Case c;
+  c.rest = reorderBoundaryFirst(boxTetMesh(8, 8, 8, Eigen::Vector3d(1.0, 1.0, 1.0)));
+  c.example = c.rest.mesh.vertices;
+  const Eigen::Index top = [&] {
+    Eigen::Index best = 0;
+    const Eigen::RowVector3d corner = c.rest.mesh.vertices.colwise().maxCoeff();
+    const Eigen::RowVector3d centre = 0.5 * (corner + c.rest.mesh.vertices.colwise().minCoeff());
+    const Eigen::RowVector3d target(centre.x(), centre.y(), corner.z());
+    for (Eigen::Index v = 0; v < c.rest.boundaryVertexCount; ++v) {
+      if ((c.example.row(v) - target).norm() < (c.example.row(best) - target).norm()) best = v;
+    }
+    return best;
+  }();
+  c.example(top, 2) -= 0.6;
+  const Tets& tets = c.rest.mesh.tets;
+  CompatibleTetOptions options;
+  options.untangle = false;
+  const CompatibleTetBuilder builder(c.rest.mesh, c.rest.boundaryVertexCount, options);
+  const Vertices surface = surfaceOf(c);
+  const Vertices harmonic = builder.harmonicExtension(surface);
+  // One ring: the vertices of tets that share a vertex with an inverted tet.
+  std::vector<char> nearInverted(static_cast<std::size_t>(harmonic.rows()), 0);
+  for (Eigen::Index t = 0; t < tets.rows(); ++t) {
+    if (tetSignedVolume(harmonic, tets.row(t)) > 0.0) continue;
+    for (int a = 0; a < 4; ++a) nearInverted[static_cast<std::size_t>(tets(t, a))] = 1;
+  }
+  std::vector<char> ring = nearInverted;
+  for (Eigen::Index t = 0; t < tets.rows(); ++t) {
+    bool touches = false;
+    for (int a = 0; a < 4; ++a)
+      touches = touches || nearInverted[static_cast<std::size_t>(tets(t, a))];
+    if (!touches) continue;
+    for (int a = 0; a < 4; ++a) ring[static_cast<std::size_t>(tets(t, a))] = 1;
+  }
+  ASSERT_GT(countInverted(harmonic, tets), 0);
+
+  const CompatibleTetResult local = builder.place(surface, 5, 1);
+  int moved = 0;
+  for (Eigen::Index v = 0; v < harmonic.rows(); ++v) {
+    if (local.vertices.row(v) == harmonic.row(v)) continue;
+    ++moved;
+    EXPECT_GE(v, c.rest.boundaryVertexCount) << "a surface vertex moved";
+    EXPECT_TRUE(ring[static_cast<std::size_t>(v)]) << "vertex " << v << " is beyond the ring";
+  }
+  EXPECT_GT(moved, 0);
+  EXPECT_LE(local.invertedTets.size(), static_cast<std::size_t>(countInverted(harmonic, tets)));
+
+  const CompatibleTetResult wide = builder.place(surface, 5, 1000);
+  EXPECT_EQ(wide.vertices, builder.place(surface, 5).vertices);
+}
+
 // ARAP's local–global iteration converges linearly, so stopping once an
 // iteration lowers the energy by less than arapStallFall = 1e-4 leaves it
 // within about 1e-4 / (1 − ρ) of its limit; 1 % allows a rate ρ up to 0.99.

@@ -206,8 +206,14 @@ class CompatibleTetBuilder {
   /// Throws InputError on a wrong row count or non-finite positions.
   CompatibleTetResult place(const Vertices& exampleSurface) const;
   /// place() with at most `arapIterations` ARAP iterations instead of the
-  /// options' (examples whose surface intersects itself take fewer).
-  CompatibleTetResult place(const Vertices& exampleSurface, int arapIterations) const;
+  /// options' and, with `arapRings` > 0, ARAP only over the interior
+  /// vertices within that many tet-rings of the harmonic map's inverted
+  /// tets, the other vertices kept where the harmonic map put them, unless
+  /// that region holds more than half of the interior (then the whole
+  /// interior, as without it). Examples whose surface intersects itself take
+  /// fewer iterations, locally (ExampleAwareOptions).
+  CompatibleTetResult place(const Vertices& exampleSurface, int arapIterations,
+                            int arapRings = 0) const;
 
   /// Step 1 only: the harmonic extension (#V by 3), exact for affine maps.
   Vertices harmonicExtension(const Vertices& exampleSurface) const;
