@@ -117,12 +117,12 @@ struct ExampleAwareOptions {
   /// fold needs ARAP: the harmonic map is valid elsewhere, and the fold's
   /// tets are excluded wherever ARAP puts them. Measured 2026-12-03 against
   /// the whole interior: bench_meshing's hard elbow excluded 90, 882 and
-  /// 11 746 tets at 10 k, 100 k and 1 M instead of 96, 1121 and 13 395, its
-  /// 1 M ARAP took 0.27 s instead of 1.7-2.0 s; the five prepare sets of
-  /// the README excluded 46 453 tets instead of 46 351 (34 of 362
-  /// self-intersecting frames changed, 22 up by 193, 12 down by 70) in
-  /// 106 s instead of 133 s. 6 rings: 46 425 tets in 110 s, and 0.44 s at
-  /// 1 M.
+  /// 11 746 tets at 10 k, 100 k and 1 M instead of 96, 1121 and 13 395, and
+  /// its 1 M ARAP took 0.27 s instead of 1.7-2.0 s; the five prepare sets of
+  /// the README excluded 46 455 tets instead of 46 351 (34 of 362
+  /// self-intersecting frames changed, 22 up by 193, 12 down by 67) in
+  /// 106-114 s instead of 133 s. 6 rings (a scratch build): 46 425 tets in
+  /// 110 s, and 0.44 s at 1 M.
   int intersectingArapRings = 4;
 };
 
