@@ -19,18 +19,24 @@ namespace tetblend {
 // once added 100 MB to the peak at 54 k tets (the bear's 48 frames), 12 MB at
 // 15 k (the dino's) and nothing measurable at 1 M (bench_meshing's hard set).
 inline constexpr double kPlacementBytesPerTet = 2000.0;
+// The same without the untangling: the harmonic map, ARAP's rotations and
+// candidates (a few 3x3 matrices and positions per tet). Measured: placing
+// bench_meshing's three 1 M examples two at a time instead of one raised
+// its peak from 997-1006 MB to 1032-1038 MB (three runs each).
+inline constexpr double kHarmonicArapBytesPerTet = 500.0;
 // The most the examples placed at once may use together.
 inline constexpr double kConcurrentPlacementBytes = 2e9;
 
-// How many examples are placed at once: one per thread while their working
-// memory stays within kConcurrentPlacementBytes, at least one. A placement's
-// own loops are parallel too, but its sparse factorisations and sequential
-// steps are not: the bear's 48 frames took 63.6 s instead of 87.2 s on 2
-// cores, with the same model bit for bit.
-inline std::size_t concurrentExamples(Eigen::Index tets, std::size_t examples) {
-  const double byMemory =
-      kConcurrentPlacementBytes /
-      (kPlacementBytesPerTet * static_cast<double>(std::max<Eigen::Index>(tets, 1)));
+// How many examples are placed at once when each needs `bytesPerTet` of
+// working memory per rest tet: one per thread while together they stay
+// within kConcurrentPlacementBytes, at least one. A placement's own loops
+// are parallel too, but its sparse factorisations and sequential steps are
+// not: the bear's 48 frames took 63.6 s instead of 87.2 s on 2 cores, with
+// the same model bit for bit.
+inline std::size_t concurrentExamples(Eigen::Index tets, std::size_t examples,
+                                      double bytesPerTet = kPlacementBytesPerTet) {
+  const double byMemory = kConcurrentPlacementBytes /
+                          (bytesPerTet * static_cast<double>(std::max<Eigen::Index>(tets, 1)));
   const std::size_t threads =
       std::min(static_cast<std::size_t>(tbb::this_task_arena::max_concurrency()),
                tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism));
