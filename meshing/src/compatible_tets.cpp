@@ -497,6 +497,10 @@ CompatibleTetBuilder& CompatibleTetBuilder::operator=(CompatibleTetBuilder&&) no
 int CompatibleTetBuilder::surfaceVertexCount() const { return impl_->surfaceCount; }
 const TetMesh& CompatibleTetBuilder::restMesh() const { return impl_->rest; }
 
+void CompatibleTetBuilder::factor() const {
+  if (impl_->interiorCount > 0) impl_->requireFactor();
+}
+
 Vertices CompatibleTetBuilder::harmonicExtension(const Vertices& exampleSurface) const {
   Impl& m = *impl_;
   m.requireExampleSurface(exampleSurface, m.surfaceCount);

@@ -282,6 +282,18 @@ TEST(CompatibleTets, InvertedHarmonicExtensionStillRunsArap) {
   expectDistortionReported(c, converged);
 }
 
+// factor() does up front what the first placement would: the placements
+// after it are the same, bit for bit.
+TEST(CompatibleTets, FactoringUpFrontChangesNoPlacement) {
+  const Case c = twistedBar(1.0, 2.0, 5, 4.0 * kPi);
+  const CompatibleTetBuilder first(c.rest.mesh, c.rest.boundaryVertexCount);
+  first.factor();
+  const CompatibleTetBuilder lazy(c.rest.mesh, c.rest.boundaryVertexCount);
+  const Vertices surface = surfaceOf(c);
+  EXPECT_EQ(first.place(surface).vertices, lazy.place(surface).vertices);
+  EXPECT_EQ(first.harmonicExtension(surface), lazy.harmonicExtension(surface));
+}
+
 // place(surface, iterations, rings): ARAP over the interior vertices within
 // `rings` tet-rings of the harmonic map's inverted tets only, every other
 // vertex left at the harmonic map bit for bit; a region of more than half

@@ -201,6 +201,12 @@ class CompatibleTetBuilder {
   CompatibleTetBuilder(CompatibleTetBuilder&&) noexcept;
   CompatibleTetBuilder& operator=(CompatibleTetBuilder&&) noexcept;
 
+  /// Assembles the interior's stiffness and factors it now, as the first
+  /// placement would: for callers about to place examples on several
+  /// threads, so that none waits for the factorisation beside it (a waiting
+  /// thread takes cycles from the factorisation's own threads).
+  void factor() const;
+
   /// Places the interior for the example surface positions `exampleSurface`
   /// (#S by 3, same vertex order as the rest surface) by steps 1–3 above.
   /// Throws InputError on a wrong row count or non-finite positions.
