@@ -12,6 +12,7 @@
 #include <tbb/blocked_range.h>
 #include <tbb/collaborative_call_once.h>
 #include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
 
 #include "example_concurrency.h"
 #include "half_edge_table.h"
@@ -377,37 +378,47 @@ CompatibleTetMeshes buildCompatibleTetMeshes(const TetMesh& rest, int surfaceVer
   // wait for the other examples' checks: bench_meshing's 10 k row checked
   // three examples on two threads in 8-9 ms, then tested two examples' rigid
   // simplices in 5-6 ms.
-  tbb::collaborative_once_flag rigidOnce;
-  std::vector<Simplex> rigid;
-  std::vector<std::vector<Simplex>> outsideOf(exampleSurfaces.size());
-  tbb::parallel_for(std::size_t{0}, exampleSurfaces.size(), [&](std::size_t k) {
-    meshes.selfIntersections[k] =
-        findSelfIntersections(exampleSurfaces[k], triangles, 1, faceComponent);
-    const std::vector<int> collapsed = collapsedFaces(restSurface, exampleSurfaces[k], triangles);
-    meshes.collapsedFaces[k] = collapsed.size();
-    if (!collapsed.empty()) {
-      surfaces[k] =
-          hiddenPartsStandIn(restSurface, exampleSurfaces[k], triangles, faceComponent, collapsed);
-      standIn[k] = !(surfaces[k] == exampleSurfaces[k]);
+  // While METIS orders a large interior on a thread of its own, these run
+  // on one thread: METIS comes first on the way to the factorisation, and
+  // three threads on two cores slowed it. bench_meshing's 1 M row, four
+  // interleaved runs each, two threads → one: METIS done after 1.58-1.74 →
+  // 1.39-1.51 s, the factorisation after it 1.90-2.15 → 1.62-1.83 s (not
+  // explained), embedding 5.27-5.59 → 4.71-5.03 s; the checks and stage 1
+  // took 0.33-0.41 s either way.
+  tbb::task_arena checking(interiorOrder.valid() ? 1 : tbb::task_arena::automatic);
+  checking.execute([&] {
+    tbb::collaborative_once_flag rigidOnce;
+    std::vector<Simplex> rigid;
+    std::vector<std::vector<Simplex>> outsideOf(exampleSurfaces.size());
+    tbb::parallel_for(std::size_t{0}, exampleSurfaces.size(), [&](std::size_t k) {
+      meshes.selfIntersections[k] =
+          findSelfIntersections(exampleSurfaces[k], triangles, 1, faceComponent);
+      const std::vector<int> collapsed = collapsedFaces(restSurface, exampleSurfaces[k], triangles);
+      meshes.collapsedFaces[k] = collapsed.size();
+      if (!collapsed.empty()) {
+        surfaces[k] = hiddenPartsStandIn(restSurface, exampleSurfaces[k], triangles, faceComponent,
+                                         collapsed);
+        standIn[k] = !(surfaces[k] == exampleSurfaces[k]);
+      }
+      embeddable[k] =
+          meshes.selfIntersections[k].pairCount == 0 &&
+          (collapsed.empty() || collapsedFaces(restSurface, surfaces[k], triangles).empty());
+      if (!embeddable[k] || options.maxRounds <= 0) return;
+      tbb::collaborative_call_once(
+          rigidOnce, [&] { rigid = rigidSimplices(meshes.rest, surfaceVertexCount, boundary); });
+      outsideOf[k] =
+          rigidSimplicesOutside(rigid, surfaces[k], triangles, vertexComponent, faceComponent);
+    });
+    std::vector<Simplex> outside;
+    for (const std::vector<Simplex>& list : outsideOf) {
+      outside.insert(outside.end(), list.begin(), list.end());
     }
-    embeddable[k] =
-        meshes.selfIntersections[k].pairCount == 0 &&
-        (collapsed.empty() || collapsedFaces(restSurface, surfaces[k], triangles).empty());
-    if (!embeddable[k] || options.maxRounds <= 0) return;
-    tbb::collaborative_call_once(
-        rigidOnce, [&] { rigid = rigidSimplices(meshes.rest, surfaceVertexCount, boundary); });
-    outsideOf[k] =
-        rigidSimplicesOutside(rigid, surfaces[k], triangles, vertexComponent, faceComponent);
+    sortUnique(outside);
+    if (!outside.empty()) {
+      meshes.rigidSimplicesOutside = static_cast<int>(outside.size());
+      if (split(outside, meshes)) report("refine");
+    }
   });
-  std::vector<Simplex> outside;
-  for (const std::vector<Simplex>& list : outsideOf) {
-    outside.insert(outside.end(), list.begin(), list.end());
-  }
-  sortUnique(outside);
-  if (!outside.empty()) {
-    meshes.rigidSimplicesOutside = static_cast<int>(outside.size());
-    if (split(outside, meshes)) report("refine");
-  }
   // Then all-surface tets an example inverts (no placement can help either).
   for (int round = 0; round < options.maxRounds; ++round) {
     std::vector<int> bad;
