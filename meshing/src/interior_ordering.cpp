@@ -47,7 +47,11 @@ InteriorOrder metisInteriorOrder([[maybe_unused]] const Tets& tets,
   std::vector<int> rows;
   // About 7 neighbours above each vertex: half of a TetGen vertex's ~14.
   rows.reserve(static_cast<std::size_t>(7) * static_cast<std::size_t>(interiorCount));
+  // Each neighbour is taken once (lastColumn: the column that last took
+  // it), then the few of them sorted: sorting every tet corner of the star
+  // took 0.25-0.3 s of the METIS thread at 1 M tets, before METIS began.
   std::vector<int> column;
+  std::vector<int> lastColumn(static_cast<std::size_t>(interiorCount), -1);
   for (int j = 0; j < interiorCount; ++j) {
     const int v = surfaceVertexCount + j;
     column.clear();
@@ -55,11 +59,14 @@ InteriorOrder metisInteriorOrder([[maybe_unused]] const Tets& tets,
          k < stars.start[static_cast<std::size_t>(v) + 1]; ++k) {
       for (int a = 0; a < 4; ++a) {
         const int w = tets(stars.tets[static_cast<std::size_t>(k)], a);
-        if (w > v) column.push_back(w - surfaceVertexCount);
+        if (w <= v) continue;
+        int& last = lastColumn[static_cast<std::size_t>(w - surfaceVertexCount)];
+        if (last == j) continue;
+        last = j;
+        column.push_back(w - surfaceVertexCount);
       }
     }
     std::sort(column.begin(), column.end());
-    column.erase(std::unique(column.begin(), column.end()), column.end());
     rows.insert(rows.end(), column.begin(), column.end());
     columnStart[static_cast<std::size_t>(j) + 1] = static_cast<int>(rows.size());
   }
