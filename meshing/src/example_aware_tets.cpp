@@ -3,13 +3,10 @@
 #include <algorithm>
 #include <cstddef>
 #include <limits>
-#include <map>
-#include <memory>
 #include <mutex>
 #include <numeric>
 #include <utility>
 
-#include <tbb/blocked_range.h>
 #include <tbb/collaborative_call_once.h>
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
@@ -19,7 +16,7 @@
 #include "hidden_parts.h"
 #include "interior_ordering.h"
 #include "inverted_tet_splits.h"
-#include "surface_interior.h"
+#include "rigid_simplices_outside.h"
 #include "tet_stellar_split.h"
 #include "tetblend/core/blas_threads.h"
 #include "tetblend/core/error.h"
@@ -171,86 +168,6 @@ std::vector<int> faceComponents(const Triangles& triangles,
     group[static_cast<std::size_t>(f)] = vertexComponent[static_cast<std::size_t>(triangles(f, 0))];
   }
   return group;
-}
-
-// The solids an example's surface bounds, one per tet component that has a
-// rigid simplex, all made up front so that the tests can share them
-// across threads.
-class ComponentInteriors {
- public:
-  ComponentInteriors(const Vertices& example, const Triangles& triangles,
-                     const std::vector<int>& faceComponent, const std::vector<int>& components) {
-    for (int component : components) {
-      std::vector<Eigen::Index> rows;
-      for (std::size_t f = 0; f < faceComponent.size(); ++f) {
-        if (faceComponent[f] == component) rows.push_back(static_cast<Eigen::Index>(f));
-      }
-      interiors_[component] =
-          std::make_unique<SurfaceInterior>(example, triangles(rows, Eigen::all));
-    }
-  }
-
-  const SurfaceInterior& of(int component) const { return *interiors_.at(component); }
-
- private:
-  std::map<int, std::unique_ptr<SurfaceInterior>> interiors_;
-};
-
-// Rigid simplices tested per TBB task: each test is a few microseconds (a
-// box query and a ray shot), 484 of them per example at bench_meshing's
-// 10 k row.
-constexpr std::size_t kRigidGrain = 32;
-
-// The simplices of `rigid` (rigidSimplices of the rest mesh, sorted) that
-// leave the solid an embeddable example (one whose surface neither
-// intersects itself nor collapses faces) bounds for their own tet
-// component, as what to split: such an edge itself; such a face through
-// one of its rigid edges if it has one (the split frees the face too),
-// else the face. Sorted, edges first, so splitSimplices never meets a face
-// whose edge it already split.
-std::vector<Simplex> rigidSimplicesOutside(const std::vector<Simplex>& rigid,
-                                           const Vertices& example, const Triangles& triangles,
-                                           const std::vector<int>& vertexComponent,
-                                           const std::vector<int>& faceComponent) {
-  std::vector<int> components;
-  for (const Simplex& simplex : rigid) {
-    components.push_back(vertexComponent[static_cast<std::size_t>(simplex.vertices[0])]);
-  }
-  sortUnique(components);
-  const ComponentInteriors interiors(example, triangles, faceComponent, components);
-  std::vector<Simplex> split(rigid.size());
-  std::vector<char> outside(rigid.size(), 0);
-  tbb::parallel_for(
-      tbb::blocked_range<std::size_t>(0, rigid.size(), kRigidGrain),
-      [&](const tbb::blocked_range<std::size_t>& range) {
-        for (std::size_t i = range.begin(); i != range.end(); ++i) {
-          const Simplex& simplex = rigid[i];
-          const auto& v = simplex.vertices;
-          const SurfaceInterior& interior =
-              interiors.of(vertexComponent[static_cast<std::size_t>(v[0])]);
-          if (simplex.count == 2) {
-            outside[i] = !interior.segmentInside(v[0], v[1]);
-            split[i] = simplex;
-            continue;
-          }
-          if (interior.triangleInside(v[0], v[1], v[2])) continue;
-          Simplex through = simplex;
-          for (const auto& [a, b] : {std::pair{v[0], v[1]}, {v[1], v[2]}, {v[0], v[2]}}) {
-            Simplex edge;
-            edge.vertices = {a, b, 0};
-            edge.count = 2;
-            if (std::binary_search(rigid.begin(), rigid.end(), edge)) through = edge;
-          }
-          outside[i] = 1;
-          split[i] = through;
-        }
-      });
-  std::vector<Simplex> result;
-  for (std::size_t i = 0; i < rigid.size(); ++i) {
-    if (outside[i]) result.push_back(split[i]);
-  }
-  sortUnique(result);
-  return result;
 }
 
 // How hard to untangle an example: the whole interior if it can be embedded,
