@@ -107,10 +107,12 @@ int localArap(const Tets& tets, const std::vector<TetElement>& elements, const V
     return std::pair{static_cast<std::size_t>(std::count(inverted.begin(), inverted.end(), 1)),
                      std::accumulate(energies.begin(), energies.end(), 0.0)};
   };
+  // Only the region moves: `positions` is the current state, `best` keeps
+  // the region's rows of the best one.
   std::pair<std::size_t, double> key = localStep(positions);
-  Vertices best = positions;
+  Eigen::MatrixXd best(n, 3);
+  for (Eigen::Index i = 0; i < n; ++i) best.row(i) = positions.row(region[i]);
   std::pair<std::size_t, double> bestKey = key;
-  Vertices current = positions;
   int iterations = 0;
   for (; iterations < stops.maxIterations && !(stops.stopWhenValid && bestKey.first == 0);
        ++iterations) {
@@ -128,13 +130,13 @@ int localArap(const Tets& tets, const std::vector<TetElement>& elements, const V
     const Eigen::MatrixXd moved = solver.solve(rhs);
     double largestMove = 0.0;
     for (Eigen::Index i = 0; i < n; ++i) {
-      largestMove = std::max(largestMove, (moved.row(i) - current.row(region[i])).norm());
-      current.row(region[i]) = moved.row(i);
+      largestMove = std::max(largestMove, (moved.row(i) - positions.row(region[i])).norm());
+      positions.row(region[i]) = moved.row(i);
     }
     const double previousEnergy = key.second;
-    key = localStep(current);
+    key = localStep(positions);
     if (key < bestKey) {
-      best = current;
+      best = moved;
       bestKey = key;
     }
     if (largestMove <= stops.tolerance || key.second > (1.0 - stops.stallFall) * previousEnergy) {
@@ -142,7 +144,7 @@ int localArap(const Tets& tets, const std::vector<TetElement>& elements, const V
       break;
     }
   }
-  positions = std::move(best);
+  for (Eigen::Index i = 0; i < n; ++i) positions.row(region[i]) = best.row(i);
   return iterations;
 }
 
