@@ -21,6 +21,9 @@ packages=(
   # libblas.so.3 alternative): the 1M-tet compatible-mesh factorisation takes
   # ~4 s instead of ~6.5 s with ATLAS on 2 cores.
   libopenblas0-pthread
+  # METIS's header for ordering large interiors with options of our own
+  # (meshing/src/interior_ordering.cpp); CHOLMOD already links its library.
+  libmetis-dev
   # Distributed batches (mpirun -n N tetblend batch) and their test; optional
   # at build time (the batch runs as one process without them).
   libopenmpi-dev openmpi-bin

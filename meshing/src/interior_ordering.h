@@ -2,8 +2,8 @@
 // Private: the fill-reducing elimination order of a rest mesh's interior
 // vertices, the unknowns of CompatibleTetBuilder's stiffness block K_II.
 // Large interiors are ordered by METIS's nested dissection, which needs only
-// the tets and, on a million tets, takes as long as the factorisation it
-// serves: buildCompatibleTetMeshes therefore orders TetGen's mesh in the
+// the tets and, on a million tets, takes most of a second (a third to a half
+// of the factorisation it serves): buildCompatibleTetMeshes therefore orders TetGen's mesh in the
 // background while it checks the examples and refines (refinement only
 // appends interior vertices and edges to them, so the order stays valid with
 // the new vertices eliminated last).
@@ -28,17 +28,19 @@ constexpr int kMetisOnlyInteriorVertices = 100000;
 /// (vertex − #S) of the k-th vertex eliminated.
 using InteriorOrder = std::vector<int>;
 
-/// METIS's nested-dissection order (CHOLMOD's cholmod_metis, postordered)
-/// of the graph of the interior vertices surfaceVertexCount..vertexCount−1
-/// joined by tet edges. Empty when there is no interior, when tetblend has
-/// no CHOLMOD, or when METIS fails: the factorisation then orders the
+/// METIS's nested-dissection order (METIS_NodeND, with fewer refinement
+/// passes than its default: the .cpp) of the graph of the interior vertices
+/// surfaceVertexCount..vertexCount−1 joined by tet edges; not postordered
+/// (CHOLMOD's analysis postorders the elimination tree). Deterministic (METIS's
+/// fixed seed). Empty when there is no interior, when tetblend is built
+/// without METIS, or when METIS fails: the factorisation then orders the
 /// interior itself.
 InteriorOrder metisInteriorOrder(const Tets& tets, int surfaceVertexCount, int vertexCount);
 
 /// metisInteriorOrder on a thread of its own, started now; the tets are
 /// copied. An invalid future when the interior is below
 /// kMetisOnlyInteriorVertices, when TBB may use only one thread
-/// (tbb::global_control), or when tetblend has no CHOLMOD.
+/// (tbb::global_control), or when tetblend is built without METIS.
 std::shared_future<InteriorOrder> metisInteriorOrderInBackground(const Tets& tets,
                                                                  int surfaceVertexCount,
                                                                  int vertexCount);

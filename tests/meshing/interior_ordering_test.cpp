@@ -27,10 +27,10 @@ namespace {
 // harmonic extension to a few hundred ulps of the unit-size coordinates.
 constexpr double kSameSolveTolerance = 1e-12;
 
-#ifndef TETBLEND_HAVE_CHOLMOD
-#define SKIP_WITHOUT_CHOLMOD() GTEST_SKIP() << "tetblend is built without CHOLMOD: no METIS order"
+#ifndef TETBLEND_HAVE_METIS
+#define SKIP_WITHOUT_METIS() GTEST_SKIP() << "tetblend is built without METIS: no interior order"
 #else
-#define SKIP_WITHOUT_CHOLMOD() static_cast<void>(0)
+#define SKIP_WITHOUT_METIS() static_cast<void>(0)
 #endif
 
 BoundaryFirstMesh box(int cells) {
@@ -74,7 +74,7 @@ long long eliminationFill(const BoundaryFirstMesh& mesh, const std::vector<int>&
 }
 
 TEST(InteriorOrdering, MetisOrdersEveryInteriorVertexOnceWithLessFillThanTheNaturalOrder) {
-  SKIP_WITHOUT_CHOLMOD();
+  SKIP_WITHOUT_METIS();
   const BoundaryFirstMesh mesh = box(9);
   const int interior = static_cast<int>(mesh.mesh.vertices.rows()) - mesh.boundaryVertexCount;
   ASSERT_EQ(interior, 8 * 8 * 8);
@@ -94,11 +94,25 @@ TEST(InteriorOrdering, MetisOrdersEveryInteriorVertexOnceWithLessFillThanTheNatu
   EXPECT_LT(4 * metisFill, 3 * naturalFill) << "METIS " << metisFill << ", natural " << naturalFill;
 }
 
+// The order is METIS's with its fixed seed: preparing the same rest twice
+// gives the same factor, and so the same model.
+TEST(InteriorOrdering, TheSameTetsAreOrderedTheSameEveryTime) {
+  SKIP_WITHOUT_METIS();
+  const BoundaryFirstMesh mesh = box(12);
+  const int vertexCount = static_cast<int>(mesh.mesh.vertices.rows());
+  const InteriorOrder first =
+      metisInteriorOrder(mesh.mesh.tets, mesh.boundaryVertexCount, vertexCount);
+  ASSERT_EQ(static_cast<int>(first.size()), vertexCount - mesh.boundaryVertexCount);
+  for (int attempt = 0; attempt < 3; ++attempt) {
+    EXPECT_EQ(metisInteriorOrder(mesh.mesh.tets, mesh.boundaryVertexCount, vertexCount), first);
+  }
+}
+
 // The background order starts only for interiors of kMetisOnlyInteriorVertices
 // or more and only when TBB may use a second thread (an interior without
 // tets: METIS orders its isolated vertices at once).
 TEST(InteriorOrdering, TheBackgroundOrderStartsForLargeInteriorsWhenASecondThreadIsAllowed) {
-  SKIP_WITHOUT_CHOLMOD();
+  SKIP_WITHOUT_METIS();
   const Tets none(0, 4);
   EXPECT_FALSE(metisInteriorOrderInBackground(none, 1, kMetisOnlyInteriorVertices).valid());
   {
@@ -138,7 +152,7 @@ TEST(InteriorOrdering, AnOrderIsExtendedByAtMostOneVertexInAHundredAfterIt) {
 // (the refined mesh's new vertices then come last) places a twisted example
 // as a builder that orders the refined interior itself.
 TEST(InteriorOrdering, ABuilderGivenTheOrderOfTheMeshItRefinesSolvesTheSame) {
-  SKIP_WITHOUT_CHOLMOD();
+  SKIP_WITHOUT_METIS();
   const BoundaryFirstMesh mesh = box(9);
   const int surface = mesh.boundaryVertexCount;
   const int vertexCount = static_cast<int>(mesh.mesh.vertices.rows());
