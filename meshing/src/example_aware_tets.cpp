@@ -5,6 +5,7 @@
 #include <limits>
 #include <mutex>
 #include <numeric>
+#include <optional>
 #include <utility>
 
 #include <tbb/collaborative_call_once.h>
@@ -401,6 +402,13 @@ CompatibleTetMeshes buildCompatibleTetMeshes(const TetMesh& rest, int surfaceVer
     });
   } else {
     forEachExample(exampleCount, placing, [&](std::size_t i) { placeExample(placingOrder[i]); });
+    // Untangled one at a time, an example has the cores to itself: its
+    // Newton factorisations may use OpenBLAS's thread team. bench_meshing's
+    // 1 M row, four interleaved runs each (scratch timers, the same excluded
+    // tets): the elbow's untangling 1134, 1148, 1187, 1048 → 1032, 980, 725,
+    // 910 ms.
+    std::optional<ParallelBlas> alone;
+    if (untangling == 1) alone.emplace();
     forEachExample(exampleCount, untangling, [&](std::size_t i) {
       untangleExample(placingOrder[i]);
       report("place");
