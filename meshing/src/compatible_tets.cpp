@@ -53,13 +53,12 @@ constexpr int kGrain = 2048;
 constexpr double kSupernodalPadding = 2.0;
 
 // Flops of the interior's factorisation (CHOLMOD's count) from which it runs
-// on OpenBLAS's and OpenMP's thread teams. After their work the teams spin
-// on the cores that the examples' placements need, OpenBLAS's for 2^28
-// cycles (its THREAD_TIMEOUT, 0.11 s here; blas_threads.h, openmp_teams.h).
-// The 1 M row of bench_meshing (6.3e10 flops) took 6.5 s of embedding with
-// OpenBLAS's team and 7.2 s without; its 100 k row (6.5e8 flops) embedded in
-// 527-546 ms without teams, 607-832 ms with them (and with OpenBLAS's pool
-// restarted after TetGen's fork).
+// on OpenBLAS's thread team. After its work the team spins on the cores that
+// the examples' placements need for 2^28 cycles (its THREAD_TIMEOUT, 0.11 s
+// here; blas_threads.h). The 1 M row of bench_meshing (6.3e10 flops) took
+// 6.5 s of embedding with the team and 7.2 s without; its 100 k row (6.5e8
+// flops) embedded in 527-546 ms without, 607-832 ms with it (and with
+// OpenBLAS's pool restarted after TetGen's fork).
 constexpr double kTeamFactorisationFlops = 1e10;
 
 // A local ARAP search (CompatibleTetBuilder::place's arapRings) runs only
@@ -171,12 +170,22 @@ struct CompatibleTetBuilder::Impl {
             "the interior's Cholesky factorisation (" + std::to_string(interiorCount) +
                 " interior vertices)");
         // Every other placement waits for this factorisation: a large one
-        // may use OpenBLAS's and OpenMP's thread teams even inside
-        // buildCompatibleTetMeshes.
-        const bool teams = solver.cholmod().fl >= kTeamFactorisationFlops;
-        useOpenMpTeams(teams);
+        // may use OpenBLAS's thread team even inside buildCompatibleTetMeshes,
+        // but never CHOLMOD's OpenMP team beside it. The two teams' waiting
+        // threads take each other's cores: the 1 M row's interior (145 914
+        // vertices, 6.3e10 flops) factored alone in a fresh process (then
+        // again in the same one), three runs each: 1.50-1.78 s (1.12-1.26 s)
+        // with OpenBLAS's team of 2, 2.46 s (1.74-1.80 s) on one thread,
+        // 3.11 s (3.01 s) with an OpenMP team of 2 and serial BLAS, 2.05 s
+        // (1.94 s) with both teams. Inside bench_meshing both teams took
+        // 5.6-8.1 s. OpenMP's dynamic team (openmp_teams.h) has as many
+        // threads as cores less the 15-minute load average (libgomp): 2
+        // on an idle machine, 1 after a quarter of an hour of work, which is
+        // why that row had drifted from one hour to the next.
+        const bool team = solver.cholmod().fl >= kTeamFactorisationFlops;
+        useOpenMpTeams(false);
         std::optional<ParallelBlas> parallelBlas;
-        if (teams) parallelBlas.emplace();
+        if (team) parallelBlas.emplace();
 #endif
         solver.factorize(blocks.interiorLower);
         if (solver.info() != Eigen::Success) {
