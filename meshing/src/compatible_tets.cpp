@@ -116,10 +116,11 @@ struct CompatibleTetBuilder::Impl {
   // SimplicialLDLT. Solves take turns (solveMutex: Eigen's CHOLMOD wrapper
   // keeps one cholmod_common), so examples may be placed on several threads.
 #ifdef TETBLEND_HAVE_CHOLMOD
-  Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower> solver;
+  using InteriorSolver = Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower>;
 #else
-  Eigen::SimplicialLDLT<SparseMatrix> solver;
+  using InteriorSolver = Eigen::SimplicialLDLT<SparseMatrix>;
 #endif
+  std::optional<InteriorSolver> solver;  // made by requireFactor, freed by releaseFactor
   mutable std::mutex solveMutex;
   // An elimination order handed to the constructor (may still be computing)
   // and, once the factorisation used it, its permutation P (indices: interior
@@ -129,7 +130,7 @@ struct CompatibleTetBuilder::Impl {
   // Collaborative: a thread that waits for the first use joins its parallel
   // loops (a std::call_once whose body runs TBB loops can deadlock when the
   // waiting thread stole the caller's outer task).
-  tbb::collaborative_once_flag factorOnce;
+  std::optional<tbb::collaborative_once_flag> factorOnce{std::in_place};  // anew after a release
   tbb::collaborative_once_flag trianglesOnce;
   tbb::collaborative_once_flag thickenedOnce;
   std::vector<TetElement> thickenedElements;  // on first use by untangleInverted
@@ -140,7 +141,8 @@ struct CompatibleTetBuilder::Impl {
 
   // Assembles K_II and K_IB and factors K_II, once, on first use.
   void requireFactor() {
-    tbb::collaborative_call_once(factorOnce, [this] {
+    tbb::collaborative_call_once(*factorOnce, [this] {
+      InteriorSolver& factor = solver.emplace();
       StiffnessBlocks blocks = assembleStiffnessBlocks(rest.tets, elements, stars, surfaceCount);
       couplingBlock = std::move(blocks.coupling);
       if (interiorCount > 0) {
@@ -155,17 +157,17 @@ struct CompatibleTetBuilder::Impl {
           permuted.selfadjointView<Eigen::Lower>() =
               blocks.interiorLower.selfadjointView<Eigen::Lower>().twistedBy(permutation);
           blocks.interiorLower = std::move(permuted);
-          solver.cholmod().nmethods = 1;
-          solver.cholmod().method[0].ordering = CHOLMOD_NATURAL;
+          factor.cholmod().nmethods = 1;
+          factor.cholmod().method[0].ordering = CHOLMOD_NATURAL;
         } else if (interiorCount >= kMetisOnlyInteriorVertices) {
-          solver.cholmod().nmethods = 1;
-          solver.cholmod().method[0].ordering = CHOLMOD_METIS;
+          factor.cholmod().nmethods = 1;
+          factor.cholmod().method[0].ordering = CHOLMOD_METIS;
         }
 #endif
-        solver.analyzePattern(blocks.interiorLower);
+        factor.analyzePattern(blocks.interiorLower);
 #ifdef TETBLEND_HAVE_CHOLMOD
         requireAllocatable(
-            static_cast<std::size_t>(kSupernodalPadding * sizeof(double) * solver.cholmod().lnz) +
+            static_cast<std::size_t>(kSupernodalPadding * sizeof(double) * factor.cholmod().lnz) +
                 blasWorkspaceBytes(),
             "the interior's Cholesky factorisation (" + std::to_string(interiorCount) +
                 " interior vertices)");
@@ -182,13 +184,13 @@ struct CompatibleTetBuilder::Impl {
         // threads as cores less the 15-minute load average (libgomp): 2
         // on an idle machine, 1 after a quarter of an hour of work, which is
         // why that row had drifted from one hour to the next.
-        const bool team = solver.cholmod().fl >= kTeamFactorisationFlops;
+        const bool team = factor.cholmod().fl >= kTeamFactorisationFlops;
         useOpenMpTeams(false);
         std::optional<ParallelBlas> parallelBlas;
         if (team) parallelBlas.emplace();
 #endif
-        solver.factorize(blocks.interiorLower);
-        if (solver.info() != Eigen::Success) {
+        factor.factorize(blocks.interiorLower);
+        if (factor.info() != Eigen::Success) {
           throw NumericalError(
               "CompatibleTetBuilder: Cholesky factorisation of the interior stiffness block "
               "failed (an interior vertex used by no tet?)");
@@ -291,8 +293,8 @@ struct CompatibleTetBuilder::Impl {
   Eigen::MatrixXd solveInterior(const Eigen::MatrixXd& rhs, const Eigen::MatrixXd& boundary) const {
     const Eigen::MatrixXd shifted = rhs - couplingBlock * boundary;
     const std::lock_guard<std::mutex> lock(solveMutex);
-    if (permutation.size() == 0) return solver.solve(shifted);
-    return permutation.transpose() * solver.solve(permutation * shifted);
+    if (permutation.size() == 0) return solver->solve(shifted);
+    return permutation.transpose() * solver->solve(permutation * shifted);
   }
 
   // Σ_t vol_t R_t g_a over the tets, restricted to interior vertices a (the
@@ -508,6 +510,11 @@ const TetMesh& CompatibleTetBuilder::restMesh() const { return impl_->rest; }
 
 void CompatibleTetBuilder::factor() const {
   if (impl_->interiorCount > 0) impl_->requireFactor();
+}
+
+void CompatibleTetBuilder::releaseFactor() const {
+  impl_->solver.reset();
+  impl_->factorOnce.emplace();
 }
 
 Vertices CompatibleTetBuilder::harmonicExtension(const Vertices& exampleSurface) const {

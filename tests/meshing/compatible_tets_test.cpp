@@ -294,6 +294,20 @@ TEST(CompatibleTets, FactoringUpFrontChangesNoPlacement) {
   EXPECT_EQ(first.harmonicExtension(surface), lazy.harmonicExtension(surface));
 }
 
+// releaseFactor() frees the interior's factorisation; the next placement
+// factors again and places as before, bit for bit, after each release.
+TEST(CompatibleTets, PlacingAfterReleasingTheFactorPlacesTheSame) {
+  const Case c = twistedBar(1.0, 2.0, 5, 4.0 * kPi);
+  const CompatibleTetBuilder builder(c.rest.mesh, c.rest.boundaryVertexCount);
+  const Vertices surface = surfaceOf(c);
+  const Vertices placed = builder.place(surface).vertices;
+  const Vertices harmonic = builder.harmonicExtension(surface);
+  builder.releaseFactor();
+  EXPECT_EQ(builder.harmonicExtension(surface), harmonic);
+  builder.releaseFactor();
+  EXPECT_EQ(builder.place(surface).vertices, placed);
+}
+
 // place(surface, iterations, rings): ARAP over the interior vertices within
 // `rings` tet-rings of the harmonic map's inverted tets only, every other
 // vertex left at the harmonic map bit for bit; a region of more than half
