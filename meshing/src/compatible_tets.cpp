@@ -15,9 +15,6 @@
 #include <Eigen/LU>
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>
-#ifdef TETBLEND_HAVE_CHOLMOD
-#include <Eigen/CholmodSupport>
-#endif
 
 #include <tbb/blocked_range.h>
 #include <tbb/collaborative_call_once.h>
@@ -35,6 +32,10 @@
 #include "tetblend/core/tet_geometry.h"
 #include "tetblend/meshing/tet_boundary.h"
 #include "untangle.h"
+#ifdef TETBLEND_HAVE_CHOLMOD
+#include "supernodal_values_ahead.h"
+#include "tetblend/core/pages_faulted_ahead.h"
+#endif
 
 namespace tetblend {
 
@@ -116,7 +117,7 @@ struct CompatibleTetBuilder::Impl {
   // SimplicialLDLT. Solves take turns (solveMutex: Eigen's CHOLMOD wrapper
   // keeps one cholmod_common), so examples may be placed on several threads.
 #ifdef TETBLEND_HAVE_CHOLMOD
-  using InteriorSolver = Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower>;
+  using InteriorSolver = SupernodalValuesAhead<SparseMatrix>;
 #else
   using InteriorSolver = Eigen::SimplicialLDLT<SparseMatrix>;
 #endif
@@ -188,6 +189,8 @@ struct CompatibleTetBuilder::Impl {
         useOpenMpTeams(false);
         std::optional<ParallelBlas> parallelBlas;
         if (team) parallelBlas.emplace();
+        const auto [values, bytes] = factor.allocateValues();
+        const PagesFaultedAhead pages(values, bytes);
 #endif
         factor.factorize(blocks.interiorLower);
         if (factor.info() != Eigen::Success) {
