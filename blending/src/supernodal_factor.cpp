@@ -9,9 +9,11 @@
 #include <vector>
 
 #include "supernodal_kernels.h"
+#include "tetblend/core/cholmod_values_ahead.h"
 #include "tetblend/core/error.h"
 #include "tetblend/core/memory_preflight.h"
 #include "tetblend/core/openmp_teams.h"
+#include "tetblend/core/pages_faulted_ahead.h"
 
 namespace tetblend {
 namespace stitch_detail {
@@ -43,8 +45,13 @@ cholmod_factor* cholmodFactor(cholmod_sparse& view, cholmod_common& common) {
     }
   }
   useOpenMpTeams(true);
-  const bool factored = factor != nullptr && cholmod_factorize(&view, factor, &common) &&
-                        common.status == CHOLMOD_OK && factor->minor >= factor->n;
+  bool factored = false;
+  {
+    const auto [values, bytes] = allocateSupernodalValues(factor, &common);
+    const PagesFaultedAhead pages(values, bytes);
+    factored = factor != nullptr && cholmod_factorize(&view, factor, &common) &&
+               common.status == CHOLMOD_OK && factor->minor >= factor->n;
+  }
   if (!factored || !factor->is_super || !factor->is_ll) {
     if (factor != nullptr) cholmod_free_factor(&factor, &common);
     cholmod_finish(&common);
