@@ -13,7 +13,6 @@
 #include "tetblend/core/error.h"
 #include "tetblend/core/memory_preflight.h"
 #include "tetblend/core/openmp_teams.h"
-#include "tetblend/core/pages_faulted_ahead.h"
 
 namespace tetblend {
 namespace stitch_detail {
@@ -47,8 +46,7 @@ cholmod_factor* cholmodFactor(cholmod_sparse& view, cholmod_common& common) {
   useOpenMpTeams(true);
   bool factored = false;
   {
-    const auto [values, bytes] = allocateSupernodalValues(factor, &common);
-    const PagesFaultedAhead pages(values, bytes);
+    const SupernodalValuesAhead ahead(factor, &common);
     factored = factor != nullptr && cholmod_factorize(&view, factor, &common) &&
                common.status == CHOLMOD_OK && factor->minor >= factor->n;
   }

@@ -34,7 +34,6 @@
 #include "untangle.h"
 #ifdef TETBLEND_HAVE_CHOLMOD
 #include "supernodal_values_ahead.h"
-#include "tetblend/core/pages_faulted_ahead.h"
 #endif
 
 namespace tetblend {
@@ -117,7 +116,7 @@ struct CompatibleTetBuilder::Impl {
   // SimplicialLDLT. Solves take turns (solveMutex: Eigen's CHOLMOD wrapper
   // keeps one cholmod_common), so examples may be placed on several threads.
 #ifdef TETBLEND_HAVE_CHOLMOD
-  using InteriorSolver = SupernodalValuesAhead<SparseMatrix>;
+  using InteriorSolver = SupernodalLLTValuesAhead<SparseMatrix>;
 #else
   using InteriorSolver = Eigen::SimplicialLDLT<SparseMatrix>;
 #endif
@@ -189,8 +188,6 @@ struct CompatibleTetBuilder::Impl {
         useOpenMpTeams(false);
         std::optional<ParallelBlas> parallelBlas;
         if (team) parallelBlas.emplace();
-        const auto [values, bytes] = factor.allocateValues();
-        const PagesFaultedAhead pages(values, bytes);
 #endif
         factor.factorize(blocks.interiorLower);
         if (factor.info() != Eigen::Success) {

@@ -1,10 +1,7 @@
 #pragma once
-// Private: Eigen's CHOLMOD supernodal LLᵀ whose factor's values can be
-// allocated before the factorisation, so that their pages are faulted in
-// ahead of it on another thread (pages_faulted_ahead.h). Only with CHOLMOD.
-
-#include <cstddef>
-#include <utility>
+// Private: Eigen's CHOLMOD supernodal LLᵀ whose first factorisation has its
+// factor's values faulted in ahead on another thread
+// (cholmod_values_ahead.h). Only with CHOLMOD.
 
 #include <Eigen/CholmodSupport>
 
@@ -13,12 +10,12 @@
 namespace tetblend {
 
 template <class Matrix>
-class SupernodalValuesAhead : public Eigen::CholmodSupernodalLLT<Matrix, Eigen::Lower> {
+class SupernodalLLTValuesAhead : public Eigen::CholmodSupernodalLLT<Matrix, Eigen::Lower> {
  public:
-  /// After analyzePattern: the factor's values, allocated now
-  /// (allocateSupernodalValues; Eigen keeps the factor to itself).
-  std::pair<void*, std::size_t> allocateValues() {
-    return allocateSupernodalValues(this->m_cholmodFactor, &this->cholmod());
+  /// Eigen's factorize, after analyzePattern (hides it).
+  void factorize(const Matrix& matrix) {
+    const SupernodalValuesAhead ahead(this->m_cholmodFactor, &this->cholmod());
+    Eigen::CholmodSupernodalLLT<Matrix, Eigen::Lower>::factorize(matrix);
   }
 };
 

@@ -21,7 +21,6 @@
 #include "vertex_block_ordering.h"
 #ifdef TETBLEND_HAVE_CHOLMOD
 #include "supernodal_values_ahead.h"
-#include "tetblend/core/pages_faulted_ahead.h"
 #endif
 
 namespace tetblend {
@@ -395,10 +394,6 @@ class NewtonSolver {
 #ifdef TETBLEND_HAVE_CHOLMOD
     if (supernodal_) {
       useOpenMpTeams(false);  // placements run beside it
-      // The first factorisation's values are fresh memory
-      // (pages_faulted_ahead.h); the later ones write over them.
-      const auto [values, bytes] = supernodalSolver_.allocateValues();
-      const PagesFaultedAhead pages(values, bytes);
       supernodalSolver_.factorize(matrix);
       return supernodalSolver_.info() == Eigen::Success;
     }
@@ -418,7 +413,7 @@ class NewtonSolver {
   bool analysed_ = false;
   std::unique_ptr<SimplicialSolver> simplicialSolver_;  // null when supernodal
 #ifdef TETBLEND_HAVE_CHOLMOD
-  SupernodalValuesAhead<SparseMatrix> supernodalSolver_;
+  SupernodalLLTValuesAhead<SparseMatrix> supernodalSolver_;
   bool supernodal_ = false;
 #endif
 };

@@ -1,29 +1,41 @@
 #pragma once
-// Header only, for the files built with CHOLMOD (meshing's interior and
-// Newton factorisations, blending's stitch): a supernodal factor's values
-// allocated before CHOLMOD's numeric factorisation, so that their pages can
-// be faulted in ahead of it on another thread (pages_faulted_ahead.h).
+// Header only, for the files built with CHOLMOD and TBB (meshing's interior
+// and Newton factorisations, blending's stitch): a supernodal factor's
+// values allocated before CHOLMOD's numeric factorisation, so that their
+// pages are faulted in ahead of it on another thread (pages_faulted_ahead.h).
 
 #include <cholmod.h>
+#include <tbb/global_control.h>
 
 #include <cstddef>
-#include <utility>
+#include <optional>
+
+#include "tetblend/core/pages_faulted_ahead.h"
 
 namespace tetblend {
 
-/// After cholmod_analyze and before the first numeric factorisation of a
-/// supernodal `factor`: allocates its values as that factorisation would
-/// (cholmod_super_numeric allocates a symbolic factor's values, and writes
-/// a numeric factor's in place) and returns them as (data, bytes).
-/// (nullptr, 0) when the factor is numeric already or not supernodal, or
-/// when CHOLMOD could not allocate them (the factorisation then reports it).
-inline std::pair<void*, std::size_t> allocateSupernodalValues(cholmod_factor* factor,
-                                                              cholmod_common* common) {
-  if (factor == nullptr || !factor->is_super || factor->xtype != CHOLMOD_PATTERN) {
-    return {nullptr, 0};
+/// Create one after cholmod_analyze, just before the numeric factorisation
+/// of a supernodal `factor`, and keep it alive through that factorisation.
+/// If the factor is symbolic, allocates its values as the factorisation
+/// would (cholmod_super_numeric allocates a symbolic factor's values and
+/// writes a numeric factor's in place) and, unless the caller allows one
+/// thread only (tbb::global_control, `--threads 1`), faults them in on a
+/// thread of its own meanwhile. Does nothing for a numeric or simplicial
+/// factor, or when CHOLMOD cannot allocate the values (the factorisation
+/// then reports it).
+class SupernodalValuesAhead {
+ public:
+  SupernodalValuesAhead(cholmod_factor* factor, cholmod_common* common) {
+    if (factor == nullptr || !factor->is_super || factor->xtype != CHOLMOD_PATTERN) return;
+    if (!cholmod_change_factor(CHOLMOD_REAL, 1, 1, 1, 1, factor, common)) return;
+    if (tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism) < 2) {
+      return;
+    }
+    pages_.emplace(factor->x, factor->xsize * sizeof(double));
   }
-  if (!cholmod_change_factor(CHOLMOD_REAL, 1, 1, 1, 1, factor, common)) return {nullptr, 0};
-  return {factor->x, factor->xsize * sizeof(double)};
-}
+
+ private:
+  std::optional<PagesFaultedAhead> pages_;
+};
 
 }  // namespace tetblend
