@@ -208,7 +208,7 @@ class CompatibleTetBuilder {
   void factor() const;
 
   /// Frees the interior's factorisation (the largest block of memory a
-  /// builder holds: 560 MB at 1 M tets), for callers done placing examples
+  /// builder holds: 536 MiB at 1 M tets), for callers done placing examples
   /// that go on to repair them; the next placement factors again. Not
   /// concurrently with any other call on this builder.
   void releaseFactor() const;
