@@ -7,13 +7,12 @@
 #include <cstddef>
 #include <utility>
 
-#include <tbb/global_control.h>
-
 #ifdef TETBLEND_HAVE_METIS
 #include <metis.h>
 #endif
 
 #include "interior_stiffness.h"
+#include "tetblend/core/helper_threads.h"
 
 namespace tetblend {
 namespace {
@@ -100,10 +99,7 @@ std::shared_future<InteriorOrder> metisInteriorOrderInBackground(const Tets& tet
                                                                  int surfaceVertexCount,
                                                                  int vertexCount) {
   if (!kHaveMetis || vertexCount - surfaceVertexCount < kMetisOnlyInteriorVertices) return {};
-  // A thread beside TBB's: not when the caller allowed one (--threads 1).
-  if (tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism) < 2) {
-    return {};
-  }
+  if (!helperThreadAllowed()) return {};
   // The copy of the tets is freed as soon as the order is made, and so is
   // what the thread's malloc arena keeps of its work space (glibc returns a
   // thread arena's free pages only when trimmed): without both, bench_meshing's

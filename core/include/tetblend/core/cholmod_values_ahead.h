@@ -5,11 +5,11 @@
 // pages are faulted in ahead of it on another thread (pages_faulted_ahead.h).
 
 #include <cholmod.h>
-#include <tbb/global_control.h>
 
 #include <cstddef>
 #include <optional>
 
+#include "tetblend/core/helper_threads.h"
 #include "tetblend/core/pages_faulted_ahead.h"
 
 namespace tetblend {
@@ -18,9 +18,8 @@ namespace tetblend {
 /// of a supernodal `factor`, and keep it alive through that factorisation.
 /// If the factor is symbolic, allocates its values as the factorisation
 /// would (cholmod_super_numeric allocates a symbolic factor's values and
-/// writes a numeric factor's in place) and, unless the caller allows one
-/// thread only (tbb::global_control, `--threads 1`), faults them in on a
-/// thread of its own meanwhile. Does nothing for a numeric or simplicial
+/// writes a numeric factor's in place) and, if helperThreadAllowed(),
+/// faults them in on a thread of its own meanwhile. Does nothing for a numeric or simplicial
 /// factor, or when CHOLMOD cannot allocate the values (the factorisation
 /// then reports it).
 class SupernodalValuesAhead {
@@ -28,10 +27,7 @@ class SupernodalValuesAhead {
   SupernodalValuesAhead(cholmod_factor* factor, cholmod_common* common) {
     if (factor == nullptr || !factor->is_super || factor->xtype != CHOLMOD_PATTERN) return;
     if (!cholmod_change_factor(CHOLMOD_REAL, 1, 1, 1, 1, factor, common)) return;
-    if (tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism) < 2) {
-      return;
-    }
-    pages_.emplace(factor->x, factor->xsize * sizeof(double));
+    if (helperThreadAllowed()) pages_.emplace(factor->x, factor->xsize * sizeof(double));
   }
 
  private:
